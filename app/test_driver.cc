@@ -1,0 +1,33 @@
+// signorini-test: run a scene quietly and print only what is stable across
+// compilers and MPI rank counts, for tests/NAME.prm + NAME.output. Values
+// are printed to 6 significant digits, and every quantity with a reference
+// and a tolerance says whether it is within it.
+#include <signorini/run.h>
+
+#include <cstdio>
+#include <iostream>
+
+int
+main(int argc, char **argv)
+{
+  return Signorini::run_program(
+    argc, argv, /*quiet=*/true, [](const Signorini::Report &report) {
+      std::printf("scene: %s\n", report.scene.c_str());
+      std::printf("status: %s\n", report.status.c_str());
+      std::printf("dimension: %u\n", report.dimension);
+      std::printf("cells: %llu\n", report.n_cells);
+      std::printf("dofs: %llu\n", report.n_dofs);
+      std::printf("load steps: %zu\n", report.steps.size());
+      for (const auto &q : report.quantities)
+        {
+          std::printf("%s: %.6g\n", q.name.c_str(), q.value);
+          if (q.has_reference && q.tolerance > 0.)
+            std::printf("%s within relative tolerance %.0e of %.7g: %s\n",
+                        q.name.c_str(),
+                        q.tolerance,
+                        q.reference,
+                        q.within_tolerance() ? "yes" : "NO");
+        }
+      std::fflush(stdout);
+    });
+}

@@ -1,0 +1,108 @@
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/component_mask.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * Dirichlet conditions and dead loads, from the "Boundary conditions"
+   * subsection. Expressions are muparser strings with variables x, y (, z)
+   * and the load-stepping time t; vector expressions separate their
+   * components by ';'. A load that is not declared is not assembled.
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    struct DirichletPart
+    {
+      types::boundary_id boundary_id;
+      std::vector<bool>  components; // dim entries
+      bool               prescribed; // false: zero displacement
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse and check against the boundary ids that exist in the mesh.
+     * Throws InputError naming the entry on any problem.
+     */
+    void
+    parse_parameters(ParameterHandler                   &prm,
+                     const std::set<types::boundary_id> &mesh_boundary_ids);
+
+    const std::vector<DirichletPart> &
+    dirichlet_parts() const
+    {
+      return dirichlet;
+    }
+
+    /// The prescribed displacement u_D(x, t) (dim components).
+    Function<dim> &
+    prescribed_displacement() const
+    {
+      return *prescribed_function;
+    }
+
+    bool
+    has_traction() const
+    {
+      return traction != nullptr;
+    }
+    bool
+    is_traction_boundary(const types::boundary_id id) const
+    {
+      return traction_ids.count(id) > 0;
+    }
+    /// Dead traction t(X, t), force per unit reference area.
+    Function<dim> &
+    traction_function() const
+    {
+      return *traction;
+    }
+
+    bool
+    has_body_force() const
+    {
+      return body_force != nullptr;
+    }
+    /// Dead body force rho0 f(X, t), force per unit reference volume.
+    Function<dim> &
+    body_force_function() const
+    {
+      return *body_force;
+    }
+
+  private:
+    std::vector<DirichletPart>             dirichlet;
+    std::unique_ptr<FunctionParser<dim>>   prescribed_function;
+    std::set<types::boundary_id>           traction_ids;
+    std::unique_ptr<FunctionParser<dim>>   traction;
+    std::unique_ptr<FunctionParser<dim>>   body_force;
+  };
+
+  /**
+   * Parse a vector-valued muparser expression with variables x, y (, z), t
+   * and the given constants; throws InputError naming @p key on failure.
+   */
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_vector_function(const std::string                   &expression,
+                        const std::map<std::string, double> &constants,
+                        const std::string                   &key);
+
+  /// Parse "name=value, name=value" into constants; InputError on failure.
+  std::map<std::string, double>
+  parse_constants(const std::string &text, const std::string &key);
+} // namespace Signorini

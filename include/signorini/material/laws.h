@@ -1,0 +1,123 @@
+#pragma once
+
+// The strain-energy laws of formulation.md section 1, each as a small
+// value type: its constants, energy(I1, I2, J) templated on the number type
+// (so that it is differentiated exactly), and its small-strain Lamé pair.
+// Linear elasticity is not invariant based and lives in linear_elastic.h.
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace Signorini
+{
+  namespace Material
+  {
+    /**
+     * Compressible neo-Hookean, ln J form:
+     *   psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2.
+     */
+    struct NeoHookeanLaw
+    {
+      double mu     = 1.;
+      double lambda = 1.;
+
+      template <typename Number>
+      Number
+      energy(const Number &I1, const Number & /*I2*/, const Number &J) const
+      {
+        using std::log;
+        const Number lnJ = log(J);
+        return 0.5 * mu * (I1 - 3.) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+      }
+
+      std::string
+      name() const
+      {
+        return "neo-Hookean (ln J)";
+      }
+
+      std::pair<double, double>
+      small_strain_lame() const
+      {
+        return {mu, lambda};
+      }
+    };
+
+    /**
+     * Code_Aster ELAS_HYPER (Mooney-Rivlin family):
+     *   psi = C10 (I1b - 3) + C01 (I2b - 3) + C20 (I1b - 3)^2 + K/2 (J - 1)^2
+     * with I1b = J^(-2/3) I1, I2b = J^(-4/3) I2. Neo-Hookean in the
+     * Code_Aster sense is C01 = C20 = 0, Mooney-Rivlin is C20 = 0.
+     * With @p include_volumetric false the K term is dropped (for
+     * incompressibility imposed as a constraint).
+     */
+    struct ElasHyperLaw
+    {
+      double C10                = 1.;
+      double C01                = 0.;
+      double C20                = 0.;
+      double K                  = 1.;
+      bool   include_volumetric = true;
+
+      template <typename Number>
+      Number
+      energy(const Number &I1, const Number &I2, const Number &J) const
+      {
+        using std::pow;
+        const Number I1b = pow(J, -2. / 3.) * I1;
+        const Number I2b = pow(J, -4. / 3.) * I2;
+        Number psi = C10 * (I1b - 3.) + C01 * (I2b - 3.) +
+                     C20 * (I1b - 3.) * (I1b - 3.);
+        if (include_volumetric)
+          psi += 0.5 * K * (J - 1.) * (J - 1.);
+        return psi;
+      }
+
+      std::string
+      name() const
+      {
+        return "ELAS_HYPER (Mooney-Rivlin family)";
+      }
+
+      std::pair<double, double>
+      small_strain_lame() const
+      {
+        const double mu = 2. * (C10 + C01);
+        return {mu, K - 2. * mu / 3.};
+      }
+    };
+
+    /**
+     * Saint Venant-Kirchhoff: psi = lambda/2 (tr E)^2 + mu tr(E^2),
+     * E = (C - I)/2, i.e. tr E = (I1 - 3)/2 and
+     * tr(E^2) = (I1^2 - 2 I2 - 2 I1 + 3)/4.
+     */
+    struct SaintVenantKirchhoffLaw
+    {
+      double mu     = 1.;
+      double lambda = 1.;
+
+      template <typename Number>
+      Number
+      energy(const Number &I1, const Number &I2, const Number & /*J*/) const
+      {
+        const Number trE  = 0.5 * (I1 - 3.);
+        const Number trE2 = 0.25 * (I1 * I1 - 2. * I2 - 2. * I1 + 3.);
+        return 0.5 * lambda * trE * trE + mu * trE2;
+      }
+
+      std::string
+      name() const
+      {
+        return "Saint Venant-Kirchhoff";
+      }
+
+      std::pair<double, double>
+      small_strain_lame() const
+      {
+        return {mu, lambda};
+      }
+    };
+  } // namespace Material
+} // namespace Signorini

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * The built-in shape of one body, from its "Geometry" subsection.
+   *
+   * Boundary ids (before 'Boundary id offset' is added):
+   * - rectangle/box: 0 x = x_min, 1 x = x_max, 2 y = y_min, 3 y = y_max,
+   *   4 z = z_min, 5 z = z_max;
+   * - quarter disk (the lower right quarter x >= cx, y <= cy): 0 the arc,
+   *   1 the edge x = cx (symmetry), 2 the edge y = cy (flat top);
+   * - half disk (the lower half y <= cy): 0 the arc, 1 the flat top y = cy.
+   */
+  struct BodyGeometry
+  {
+    enum class Shape
+    {
+      rectangle,
+      quarter_disk,
+      half_disk
+    };
+
+    Shape                     shape = Shape::rectangle;
+    std::vector<double>       lower_corner;
+    std::vector<double>       upper_corner;
+    std::vector<unsigned int> subdivisions;
+    std::vector<double>       center;
+    double                    radius             = 1.;
+    unsigned int              boundary_id_offset = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// @p context is the subsection path used in error messages.
+    void
+    parse_parameters(ParameterHandler  &prm,
+                     const unsigned int dim,
+                     const std::string &context);
+  };
+
+  /// The "Mesh" subsection: where the scene's coarse mesh comes from.
+  struct MeshParameters
+  {
+    enum class Source
+    {
+      generated,
+      gmsh
+    };
+    Source       source = Source::generated;
+    std::string  gmsh_file;
+    unsigned int global_refinements = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+  };
+
+  /**
+   * Build the coarse scene mesh into @p tria and refine it globally:
+   * either one generated coarse mesh per body (cells of body b carry
+   * material id @p material_ids[b]; the bodies keep their own vertices,
+   * so bodies that touch are not glued together), or a Gmsh file whose
+   * physical tags give material and boundary ids. Curved boundaries get
+   * a SphericalManifold and the cells next to them a transfinite
+   * interpolation, so refinement follows the geometry.
+   */
+  template <int dim>
+  void
+  build_scene_mesh(const MeshParameters                      &mesh,
+                   const std::vector<BodyGeometry>           &bodies,
+                   const std::vector<types::material_id>     &material_ids,
+                   parallel::distributed::Triangulation<dim> &tria);
+} // namespace Signorini

@@ -1,0 +1,130 @@
+#pragma once
+
+#include <signorini/linear_solver.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <string>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * Something a Newton method can minimise: value, minus gradient and
+   * Hessian at a (ghosted) state, condensed with the given constraints.
+   * The energy functional is one; contact penalty terms add to it.
+   */
+  class Objective
+  {
+  public:
+    virtual ~Objective() = default;
+
+    virtual Evaluation
+    evaluate(const VectorType                &u,
+             const AffineConstraints<double> &constraints,
+             VectorType                      *rhs,
+             MatrixType                      *hessian) = 0;
+  };
+
+  /**
+   * Newton's method for min E(u), with
+   * - a backtracking Armijo line search on E that rejects inadmissible
+   *   states (J <= 0 or non-finite values at a quadrature point);
+   * - descent directions only: if the Newton direction d does not satisfy
+   *   g.d < -eps |g| |d| (indefinite Hessian) or the linear solve fails,
+   *   the Hessian is shifted, H + tau diag(|H_ii|), with tau = 'Initial
+   *   shift' multiplied by 10 per retry, and as a last resort the scaled
+   *   steepest descent direction is used;
+   * - convergence when |minus gradient|_2 <= max(rtol * force scale,
+   *   atol) and, after the first iteration, the last energy decrease
+   *   |dE| <= etol * (|strain energy| + |external work|).
+   */
+  class NewtonMinimizer
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int max_iterations     = 50;
+      double       residual_tolerance = 1e-10;
+      double       absolute_tolerance = 1e-14;
+      double       energy_tolerance   = 1e-12;
+      double       armijo_c1          = 1e-4;
+      double       backtrack_factor   = 0.5;
+      unsigned int max_backtracks     = 30;
+      double       initial_shift      = 1e-6;
+      unsigned int max_shifts         = 8;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    struct Statistics
+    {
+      bool         converged            = false;
+      unsigned int iterations           = 0;
+      unsigned int backtracks           = 0;
+      unsigned int regularized_steps    = 0;
+      unsigned int linear_iterations    = 0;
+      unsigned int linear_fallbacks     = 0;
+      double       residual             = 0.;
+      double       force_scale          = 0.;
+      Evaluation   evaluation;
+      std::string  reason;
+    };
+
+    NewtonMinimizer(const Parameters   &parameters,
+                    const LinearSolver &linear_solver,
+                    ConditionalOStream &progress,
+                    TimerOutput        &timer);
+
+    /**
+     * Minimise from @p u (locally owned entries; must satisfy
+     * @p constraints). @p ghosted is a ghosted work vector of the same
+     * layout; @p hessian and @p rhs are work objects with the sparsity
+     * and layout of the problem. On return @p u holds the last accepted
+     * iterate, whether or not it converged.
+     */
+    Statistics
+    minimize(Objective                       &objective,
+             const AffineConstraints<double> &constraints,
+             VectorType                      &u,
+             VectorType                      &ghosted,
+             MatrixType                      &hessian,
+             VectorType                      &rhs);
+
+    /**
+     * A tangent predictor for changed Dirichlet data: one linear step
+     * d from H d = -g with the inhomogeneous @p constraints (which move
+     * the Dirichlet values to their new targets), accepted in full if the
+     * new state is admissible. Returns false (u unchanged) otherwise.
+     */
+    bool
+    predictor(Objective                       &objective,
+              const AffineConstraints<double> &constraints,
+              VectorType                      &u,
+              VectorType                      &ghosted,
+              MatrixType                      &hessian,
+              VectorType                      &rhs,
+              std::string                     &reason);
+
+  private:
+    bool
+    descent_direction(const AffineConstraints<double> &constraints,
+                      MatrixType                      &hessian,
+                      const VectorType                &rhs,
+                      VectorType                      &direction,
+                      Statistics                      &statistics);
+
+    Parameters          parameters;
+    const LinearSolver &linear_solver;
+    ConditionalOStream &progress;
+    TimerOutput        &timer;
+  };
+} // namespace Signorini

@@ -1,0 +1,112 @@
+#pragma once
+
+#include <signorini/energy_functional.h>
+#include <signorini/material/interface.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /// A computed quantity of interest, with its reference where one exists.
+  struct Quantity
+  {
+    std::string name;
+    double      value         = 0.;
+    bool        has_reference = false;
+    double      reference     = 0.;
+    double      tolerance     = 0.; // relative; 0: not checked
+
+    double
+    relative_error() const
+    {
+      return std::abs(value - reference) /
+             std::max(std::abs(reference), 1e-300);
+    }
+    bool
+    within_tolerance() const
+    {
+      return !has_reference || tolerance <= 0. || relative_error() <= tolerance;
+    }
+  };
+
+  /**
+   * Everything a run reports about a converged state: the quantities of
+   * interest of the "Postprocess" subsection (mean boundary displacement
+   * with an optional reference value and tolerance, reaction forces on
+   * boundary ids), and the graphical output of the "Output" subsection
+   * (VTU/PVTU with a .pvd series, or HDF5/XDMF): displacement, J, Cauchy
+   * stress (with sigma_zz in plane strain), von Mises stress, material
+   * id and MPI rank. CSV files: reactions.csv (one row per load step).
+   */
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Reads the "Postprocess" and "Output" subsections.
+    Postprocessor(ParameterHandler                                          &prm,
+                  const DoFHandler<dim>                                     &dof_handler,
+                  const Mapping<dim>                                        &mapping,
+                  const std::map<types::material_id, const Material::Interface *> &materials,
+                  const EnergyFunctional<dim>                               &energy,
+                  const AffineConstraints<double>                           &hanging_constraints,
+                  const std::set<types::boundary_id>                        &mesh_boundary_ids,
+                  const std::string                                         &output_directory);
+
+    /// Quantities of interest at the ghosted state @p u, load time @p time.
+    std::vector<Quantity>
+    compute_quantities(const VectorType &u, const double time);
+
+    /// Write the graphical output of load step @p step if it is due.
+    void
+    write_output(const VectorType  &u,
+                 const double       time,
+                 const unsigned int step,
+                 const bool         last_step);
+
+    std::string
+    verbosity() const
+    {
+      return screen_verbosity;
+    }
+
+  private:
+    const DoFHandler<dim>                                           &dof_handler;
+    const Mapping<dim>                                              &mapping;
+    const std::map<types::material_id, const Material::Interface *> &materials;
+    const EnergyFunctional<dim>                                     &energy;
+    const AffineConstraints<double>                                 &hanging_constraints;
+    std::string                                                      output_directory;
+
+    // Postprocess.
+    int          mean_displacement_boundary = -1;
+    unsigned int mean_displacement_component = 0;
+    std::string  mean_displacement_name;
+    bool         has_reference = false;
+    double       reference     = 0.;
+    double       tolerance     = 0.;
+    std::vector<types::boundary_id> reaction_boundaries;
+
+    // Output.
+    std::string  format = "vtu";
+    unsigned int interval = 1;
+    std::string  screen_verbosity = "normal";
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<XDMFEntry>                      xdmf_entries;
+    bool                                        reactions_header_written = false;
+  };
+} // namespace Signorini

@@ -1,0 +1,164 @@
+#pragma once
+
+#include <signorini/boundary_conditions.h>
+#include <signorini/energy_functional.h>
+#include <signorini/json.h>
+#include <signorini/linear_solver.h>
+#include <signorini/material/interface.h>
+#include <signorini/mesh.h>
+#include <signorini/newton.h>
+#include <signorini/postprocess.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /// Declare every entry of a scene parameter file.
+  void
+  declare_parameters(ParameterHandler &prm);
+
+  /**
+   * What a run did, for summary.json, the screen and the test driver.
+   */
+  struct Report
+  {
+    struct Step
+    {
+      double       time;
+      unsigned int newton_iterations;
+      unsigned int backtracks;
+      unsigned int regularized;
+      unsigned int linear_iterations;
+      unsigned int cuts_before;
+      double       residual;
+      double       energy;
+      double       min_J;
+    };
+
+    std::string              scene;
+    std::string              parameter_file;
+    std::string              output_directory;
+    unsigned int             dimension = 0;
+    unsigned int             degree    = 0;
+    unsigned long long       n_cells   = 0;
+    unsigned long long       n_dofs    = 0;
+    unsigned int             n_ranks   = 1;
+    double                   h_min     = 0.;
+    double                   h_max     = 0.;
+    std::vector<std::string> materials;
+    std::string              solver;
+    std::string              linear_solver;
+    std::string              status = "not run";
+    std::string              reason;
+    double                   final_time        = 0.;
+    unsigned int             step_cuts         = 0;
+    unsigned int             newton_iterations = 0;
+    std::vector<Step>        steps;
+    std::vector<Quantity>    quantities;
+    std::map<std::string, double> timing;
+  };
+
+  /**
+   * One scene: the mesh of its bodies, their materials, boundary
+   * conditions and loads, solved by load stepping with a Newton
+   * minimiser of the total potential energy, with output after each step.
+   *
+   * Data flow: parameters -> mesh (build_scene_mesh) -> DoFs and
+   * constraints -> EnergyFunctional (assembly) -> NewtonMinimizer (with
+   * LinearSolver) per load step -> Postprocessor (quantities, reactions,
+   * VTU/HDF5, CSV) -> summary.json.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    /**
+     * Parse the scene from @p prm (already read from @p parameter_file),
+     * build the mesh and check the input. Throws InputError on bad input,
+     * before anything is written.
+     */
+    Simulator(ParameterHandler  &prm,
+              const std::string &parameter_file,
+              const bool         quiet,
+              MPI_Comm           comm);
+
+    /**
+     * Create the output folder, write used_parameters.prm, solve every
+     * load step and write the output. Returns the report; its status is
+     * "converged" or "failed" (then reason says why, the output of the
+     * last converged step is on disk and summary.json says so).
+     */
+    const Report &
+    run(ParameterHandler &prm);
+
+  private:
+    void
+    setup_dofs();
+    AffineConstraints<double>
+    boundary_constraints(const double time, const bool homogeneous) const;
+    AffineConstraints<double>
+    increment_constraints(const double time) const;
+    bool
+    solve_load_step(const double time, NewtonMinimizer::Statistics &stats);
+    void
+    write_summary() const;
+
+    MPI_Comm           comm;
+    ConditionalOStream pcout;
+    ConditionalOStream progress;
+    TimerOutput        timer;
+
+    // Parameters.
+    std::string                 output_directory;
+    MeshParameters              mesh_parameters;
+    std::vector<BodyGeometry>   geometries;
+    std::vector<types::material_id> material_ids;
+    double                      end_time = 1.;
+    unsigned int                n_steps  = 1;
+    double                      min_step_fraction = 1e-4;
+    NewtonMinimizer::Parameters newton_parameters;
+    LinearSolver::Parameters    linear_parameters;
+    bool                        has_prescribed_motion = false;
+
+    // Discretisation.
+    parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<FESystem<dim>>            fe;
+    std::unique_ptr<MappingQ<dim>>            mapping;
+    DoFHandler<dim>                           dof_handler;
+    IndexSet                                  locally_owned;
+    IndexSet                                  locally_relevant;
+    AffineConstraints<double>                 hanging_constraints;
+    AffineConstraints<double>                 homogeneous_constraints;
+
+    // Physics.
+    BoundaryConditions<dim>                                   bc;
+    std::vector<std::unique_ptr<Material::Interface>>         material_objects;
+    std::map<types::material_id, const Material::Interface *> materials;
+    std::unique_ptr<EnergyFunctional<dim>>                    energy;
+    std::unique_ptr<Postprocessor<dim>>                       postprocessor;
+
+    // Linear algebra.
+    std::unique_ptr<LinearSolver> linear_solver;
+    MatrixType hessian;
+    VectorType solution;         // locally owned
+    VectorType solution_ghosted; // locally relevant
+    VectorType rhs;
+
+    Report report;
+  };
+} // namespace Signorini

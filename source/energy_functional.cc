@@ -1,0 +1,303 @@
+#include <signorini/energy_functional.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/meshworker/mesh_loop.h>
+
+namespace Signorini
+{
+  namespace
+  {
+    template <int dim>
+    struct Scratch
+    {
+      Scratch(const Mapping<dim>       &mapping,
+              const FiniteElement<dim> &fe,
+              const bool                with_faces)
+        : fe_values(mapping,
+                    fe,
+                    QGauss<dim>(fe.degree + 1),
+                    update_values | update_gradients |
+                      update_quadrature_points | update_JxW_values)
+        , fe_face_values(mapping,
+                         fe,
+                         QGauss<dim - 1>(fe.degree + 1),
+                         with_faces ? (update_values | update_quadrature_points |
+                                       update_JxW_values) :
+                                      update_default)
+        , with_faces(with_faces)
+      {}
+
+      Scratch(const Scratch &other)
+        : Scratch(other.fe_values.get_mapping(),
+                  other.fe_values.get_fe(),
+                  other.with_faces)
+      {}
+
+      FEValues<dim>                     fe_values;
+      FEFaceValues<dim>                 fe_face_values;
+      bool                              with_faces;
+      std::vector<Tensor<2, dim>>       grads;
+      std::vector<Tensor<1, dim>>       values;
+      std::vector<Vector<double>>       loads;
+      std::vector<Tensor<1, dim>>       shape_grads;
+      std::vector<unsigned int>         shape_component;
+      std::vector<Tensor<2, dim>>       AG;
+    };
+
+    struct Copy
+    {
+      FullMatrix<double>                   matrix;
+      Vector<double>                       rhs;
+      std::vector<types::global_dof_index> dofs;
+      double                               strain_energy = 0.;
+      double                               external_work = 0.;
+      double                               force_sq      = 0.;
+      double                               min_J = std::numeric_limits<double>::max();
+      bool                                 admissible = true;
+      bool                                 active     = false;
+
+      void
+      reset()
+      {
+        strain_energy = external_work = force_sq = 0.;
+        min_J      = std::numeric_limits<double>::max();
+        admissible = true;
+        active     = false;
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  EnergyFunctional<dim>::EnergyFunctional(
+    const DoFHandler<dim>                                           &dof_handler,
+    const Mapping<dim>                                              &mapping,
+    const std::map<types::material_id, const Material::Interface *> &materials,
+    const BoundaryConditions<dim>                                    &bc)
+    : dof_handler(dof_handler)
+    , mapping(mapping)
+    , materials(materials)
+    , bc(bc)
+  {}
+
+  template <int dim>
+  Evaluation
+  EnergyFunctional<dim>::evaluate(const VectorType                &u,
+                                  const double                     time,
+                                  const AffineConstraints<double> &constraints,
+                                  VectorType                      *rhs,
+                                  MatrixType                      *hessian) const
+  {
+    const bool want_gradient = (rhs != nullptr);
+    const bool want_hessian  = (hessian != nullptr);
+    Assert(!want_hessian || want_gradient, ExcInternalError());
+    if (rhs)
+      *rhs = 0.;
+    if (hessian)
+      *hessian = 0.;
+
+    const FiniteElement<dim> &fe            = dof_handler.get_fe();
+    const unsigned int        dofs_per_cell = fe.n_dofs_per_cell();
+    const FEValuesExtractors::Vector displacement(0);
+
+    // Function objects are shared between threads: FunctionParser is
+    // thread safe for evaluation, and set_time happens before the loop.
+    Function<dim> *traction =
+      bc.has_traction() ? &bc.traction_function() : nullptr;
+    Function<dim> *body_force =
+      bc.has_body_force() ? &bc.body_force_function() : nullptr;
+    if (traction)
+      traction->set_time(time);
+    if (body_force)
+      body_force->set_time(time);
+
+    auto cell_worker = [&](const auto &cell, Scratch<dim> &s, Copy &c) {
+      s.fe_values.reinit(cell);
+      const unsigned int n_q = s.fe_values.n_quadrature_points;
+      c.reset(); // mesh_loop reuses one copy object per thread
+      c.dofs.resize(dofs_per_cell);
+      cell->get_dof_indices(c.dofs);
+      c.active = true;
+      if (want_gradient)
+        c.rhs.reinit(dofs_per_cell);
+      if (want_hessian)
+        c.matrix.reinit(dofs_per_cell, dofs_per_cell);
+
+      const auto material_it = materials.find(cell->material_id());
+      Assert(material_it != materials.end(), ExcInternalError());
+      const Material::Interface &material = *material_it->second;
+
+      s.grads.resize(n_q);
+      s.fe_values[displacement].get_function_gradients(u, s.grads);
+      if (bc.has_body_force())
+        {
+          s.values.resize(n_q);
+          s.fe_values[displacement].get_function_values(u, s.values);
+          s.loads.resize(n_q, Vector<double>(dim));
+          body_force->vector_value_list(s.fe_values.get_quadrature_points(),
+                                       s.loads);
+        }
+      s.shape_grads.resize(dofs_per_cell);
+      s.shape_component.resize(dofs_per_cell);
+      s.AG.resize(dofs_per_cell);
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        s.shape_component[i] = fe.system_to_component_index(i).first;
+
+      Material::Response<dim> response;
+      std::vector<double>     f_int(want_gradient ? dofs_per_cell : 0, 0.);
+      std::vector<double>     f_ext(want_gradient ? dofs_per_cell : 0, 0.);
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + s.grads[q];
+          const double         J = determinant(F);
+          c.min_J                = std::min(c.min_J, J);
+          if (!Material::evaluate(material, F, response, want_gradient) ||
+              !(J > 0.))
+            {
+              c.admissible = false;
+              return;
+            }
+          const double JxW = s.fe_values.JxW(q);
+          c.strain_energy += response.psi * JxW;
+
+          if (bc.has_body_force())
+            for (unsigned int d = 0; d < dim; ++d)
+              c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
+
+          if (!want_gradient)
+            continue;
+
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            s.shape_grads[i] =
+              s.fe_values.shape_grad_component(i, q, s.shape_component[i]);
+
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int ci = s.shape_component[i];
+              f_int[i] += (response.P[ci] * s.shape_grads[i]) * JxW;
+              if (bc.has_body_force())
+                f_ext[i] += s.loads[q][ci] *
+                            s.fe_values.shape_value_component(i, q, ci) * JxW;
+            }
+
+          if (!want_hessian)
+            continue;
+          // K_ij = grad phi_i : A : grad phi_j with one nonzero component
+          // per shape function: AG_i[c][L] = sum_J A[ci][J][c][L] g_i[J].
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const unsigned int ci = s.shape_component[i];
+              Tensor<2, dim>     ag;
+              for (unsigned int jj = 0; jj < dim; ++jj)
+                for (unsigned int cc = 0; cc < dim; ++cc)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    ag[cc][l] += response.A[ci][jj][cc][l] * s.shape_grads[i][jj];
+              s.AG[i] = ag * JxW;
+            }
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              c.matrix(i, j) +=
+                s.AG[i][s.shape_component[j]] * s.shape_grads[j];
+        }
+
+      if (want_gradient)
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            c.rhs(i) = f_ext[i] - f_int[i];
+            c.force_sq += f_int[i] * f_int[i] + f_ext[i] * f_ext[i];
+          }
+    };
+
+    auto boundary_worker =
+      [&](const auto &cell, const unsigned int face_no, Scratch<dim> &s, Copy &c) {
+        if (!c.admissible ||
+            !bc.is_traction_boundary(cell->face(face_no)->boundary_id()))
+          return;
+        s.fe_face_values.reinit(cell, face_no);
+        const unsigned int n_q = s.fe_face_values.n_quadrature_points;
+        s.values.resize(n_q);
+        s.fe_face_values[displacement].get_function_values(u, s.values);
+        s.loads.resize(n_q, Vector<double>(dim));
+        traction->vector_value_list(s.fe_face_values.get_quadrature_points(),
+                                   s.loads);
+        std::vector<double> f_ext(dofs_per_cell, 0.);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double JxW = s.fe_face_values.JxW(q);
+            for (unsigned int d = 0; d < dim; ++d)
+              c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
+            if (want_gradient)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  f_ext[i] += s.loads[q][ci] *
+                              s.fe_face_values.shape_value(i, q) * JxW;
+                }
+          }
+        if (want_gradient)
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              c.rhs(i) += f_ext[i];
+              c.force_sq += f_ext[i] * f_ext[i];
+            }
+      };
+
+    Evaluation result;
+    double     force_sq = 0.;
+    auto       copier   = [&](const Copy &c) {
+      if (!c.active)
+        return;
+      result.strain_energy += c.strain_energy;
+      result.external_work += c.external_work;
+      result.min_J = std::min(result.min_J, c.min_J);
+      force_sq += c.force_sq;
+      if (!c.admissible)
+        {
+          result.admissible = false;
+          return;
+        }
+      if (want_hessian)
+        constraints.distribute_local_to_global(c.matrix, c.rhs, c.dofs,
+                                               *hessian, *rhs);
+      else if (want_gradient)
+        constraints.distribute_local_to_global(c.rhs, c.dofs, *rhs);
+    };
+
+    using namespace MeshWorker;
+    AssembleFlags flags = assemble_own_cells;
+    if (bc.has_traction())
+      flags |= assemble_boundary_faces;
+    Scratch<dim> scratch(mapping, fe, bc.has_traction());
+    mesh_loop(filter_iterators(dof_handler.active_cell_iterators(),
+                               IteratorFilters::LocallyOwnedCell()),
+              cell_worker,
+              copier,
+              scratch,
+              Copy(),
+              flags,
+              boundary_worker);
+
+    const MPI_Comm comm = dof_handler.get_communicator();
+    result.strain_energy = Utilities::MPI::sum(result.strain_energy, comm);
+    result.external_work = Utilities::MPI::sum(result.external_work, comm);
+    result.min_J         = Utilities::MPI::min(result.min_J, comm);
+    result.force_scale   = std::sqrt(Utilities::MPI::sum(force_sq, comm));
+    result.admissible =
+      Utilities::MPI::min(result.admissible ? 1 : 0, comm) == 1;
+    result.value = result.strain_energy - result.external_work;
+    if (!std::isfinite(result.value))
+      result.admissible = false;
+
+    if (rhs)
+      rhs->compress(VectorOperation::add);
+    if (hessian)
+      hessian->compress(VectorOperation::add);
+    return result;
+  }
+
+  template class EnergyFunctional<2>;
+  template class EnergyFunctional<3>;
+} // namespace Signorini

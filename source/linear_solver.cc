@@ -1,0 +1,173 @@
+#include <signorini/input_error.h>
+#include <signorini/linear_solver.h>
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_minres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+namespace Signorini
+{
+  void
+  LinearSolver::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Type",
+                      "direct",
+                      Patterns::Selection("direct|cg-amg|minres-amg"),
+                      "direct: sparse LU (Trilinos Amesos). cg-amg: conjugate "
+                      "gradients with algebraic multigrid (Trilinos ML), for "
+                      "large problems with a positive definite Hessian. "
+                      "minres-amg: MINRES with the same preconditioner, "
+                      "tolerates an indefinite Hessian.");
+    prm.declare_entry("Direct solver",
+                      "Amesos_Klu",
+                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
+                      "The Amesos direct solver.");
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Patterns::Double(0., 1.),
+                      "Iterative solvers: stop when |H d - b| <= this * |b|.");
+    prm.declare_entry("Maximum iterations",
+                      "1000",
+                      Patterns::Integer(1),
+                      "Iterative solvers: iteration limit.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Patterns::Double(0., 1.),
+                      "Trilinos ML aggregation threshold.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 20),
+                      "Trilinos ML smoother sweeps.");
+    prm.declare_entry("Fall back to direct",
+                      "true",
+                      Patterns::Bool(),
+                      "If an iterative solve does not converge, solve the "
+                      "same system with the direct solver.");
+  }
+
+  void
+  LinearSolver::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string t = prm.get("Type");
+    type = (t == "direct" ? Type::direct :
+            t == "cg-amg" ? Type::cg_amg :
+                            Type::minres_amg);
+    direct_solver         = prm.get("Direct solver");
+    relative_tolerance    = prm.get_double("Relative tolerance");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    fallback_to_direct    = prm.get_bool("Fall back to direct");
+  }
+
+  std::string
+  LinearSolver::Parameters::name() const
+  {
+    switch (type)
+      {
+        case Type::direct:
+          return "direct (" + direct_solver + ")";
+        case Type::cg_amg:
+          return "CG + AMG (Trilinos ML)";
+        default:
+          return "MINRES + AMG (Trilinos ML)";
+      }
+  }
+
+  LinearSolver::LinearSolver(const Parameters &parameters)
+    : parameters(parameters)
+  {}
+
+  void
+  LinearSolver::set_constant_modes(const std::vector<std::vector<bool>> &modes,
+                                   const bool higher_order_elements)
+  {
+    constant_modes = modes;
+    higher_order   = higher_order_elements;
+  }
+
+  bool
+  LinearSolver::solve_direct(const MatrixType &H,
+                             VectorType       &x,
+                             const VectorType &b,
+                             std::string      &message) const
+  {
+    try
+      {
+        SolverControl                            control(1, 0.);
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+          false, parameters.direct_solver);
+        TrilinosWrappers::SolverDirect solver(control, data);
+        solver.solve(H, x, b);
+      }
+    catch (const std::exception &e)
+      {
+        message = std::string("direct solver failed: ") + e.what();
+        return false;
+      }
+    for (const auto i : x.locally_owned_elements())
+      if (!std::isfinite(x[i]))
+        {
+          message = "direct solver returned non-finite values (singular "
+                    "Hessian: is the body held against rigid motion?)";
+          return false;
+        }
+    return true;
+  }
+
+  bool
+  LinearSolver::solve(const MatrixType &H,
+                      VectorType       &x,
+                      const VectorType &b,
+                      Info             &info,
+                      std::string      &message) const
+  {
+    info = Info();
+    x    = 0.;
+    if (parameters.type == Parameters::Type::direct)
+      return solve_direct(H, x, b, message);
+
+    TrilinosWrappers::PreconditionAMG                 amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = higher_order;
+    data.smoother_sweeps       = parameters.smoother_sweeps;
+    data.aggregation_threshold = parameters.aggregation_threshold;
+    data.constant_modes        = constant_modes;
+    SolverControl control(parameters.max_iterations,
+                          parameters.relative_tolerance * b.l2_norm());
+    try
+      {
+        amg.initialize(H, data);
+        if (parameters.type == Parameters::Type::cg_amg)
+          {
+            SolverCG<VectorType> cg(control);
+            cg.solve(H, x, b, amg);
+          }
+        else
+          {
+            SolverMinRes<VectorType> minres(control);
+            minres.solve(H, x, b, amg);
+          }
+        info.iterations = control.last_step();
+        return true;
+      }
+    catch (const std::exception &e)
+      {
+        info.iterations = control.last_step();
+        message         = parameters.name() + " did not converge in " +
+                  std::to_string(control.last_step()) + " iterations";
+        if (!parameters.fallback_to_direct)
+          return false;
+        info.used_fallback = true;
+        x                  = 0.;
+        std::string direct_message;
+        if (solve_direct(H, x, b, direct_message))
+          return true;
+        message += "; " + direct_message;
+        return false;
+      }
+  }
+} // namespace Signorini

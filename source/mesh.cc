@@ -1,0 +1,376 @@
+#include <signorini/input_error.h>
+#include <signorini/mesh.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <fstream>
+#include <memory>
+
+namespace Signorini
+{
+  void
+  BodyGeometry::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Shape",
+                      "rectangle",
+                      Patterns::Selection("rectangle|quarter disk|half disk"),
+                      "Built-in shape of the body (used when Mesh > Source = "
+                      "generated). rectangle: a rectangle (2D) or box (3D) "
+                      "with boundary ids 0/1 at x min/max, 2/3 at y min/max, "
+                      "4/5 at z min/max. quarter disk (2D): the lower right "
+                      "quarter {x >= cx, y <= cy} of the disk, ids 0 arc, "
+                      "1 edge x = cx, 2 edge y = cy. half disk (2D): the "
+                      "lower half {y <= cy}, ids 0 arc, 1 flat top. The "
+                      "lowest point of a disk of center (0, R) touches y = 0 "
+                      "at the origin.");
+    prm.declare_entry("Lower corner",
+                      "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Rectangle/box: lower corner [length], dim entries "
+                      "(extra entries are ignored).");
+    prm.declare_entry("Upper corner",
+                      "1, 1, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Rectangle/box: upper corner [length].");
+    prm.declare_entry("Subdivisions",
+                      "1, 1, 1",
+                      Patterns::List(Patterns::Integer(1), 2, 3),
+                      "Rectangle/box: number of coarse cells per direction.");
+    prm.declare_entry("Center",
+                      "0, 1, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Disks: center of the full disk [length].");
+    prm.declare_entry("Radius", "1", Patterns::Double(), "Disks: radius [length], > 0.");
+    prm.declare_entry("Boundary id offset",
+                      "0",
+                      Patterns::Integer(0, 200),
+                      "Added to every boundary id of this body, so that two "
+                      "bodies of one scene get distinct ids (e.g. 10 for the "
+                      "second body).");
+  }
+
+  namespace
+  {
+    template <typename T>
+    std::vector<T>
+    get_list(ParameterHandler  &prm,
+             const std::string &key,
+             const unsigned int dim,
+             const std::string &context)
+    {
+      const std::vector<std::string> items =
+        Utilities::split_string_list(prm.get(key));
+      if (items.size() < dim)
+        throw InputError(context + " > " + key,
+                         "needs " + std::to_string(dim) +
+                           " entries in " + std::to_string(dim) +
+                           "D, got '" + prm.get(key) + "'");
+      std::vector<T> values;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if constexpr (std::is_same_v<T, double>)
+            values.push_back(Utilities::string_to_double(items[d]));
+          else
+            values.push_back(Utilities::string_to_int(items[d]));
+        }
+      return values;
+    }
+  } // namespace
+
+  void
+  BodyGeometry::parse_parameters(ParameterHandler  &prm,
+                                 const unsigned int dim,
+                                 const std::string &context)
+  {
+    const std::string s = prm.get("Shape");
+    shape = (s == "rectangle"    ? Shape::rectangle :
+             s == "quarter disk" ? Shape::quarter_disk :
+                                   Shape::half_disk);
+    lower_corner       = get_list<double>(prm, "Lower corner", dim, context);
+    upper_corner       = get_list<double>(prm, "Upper corner", dim, context);
+    subdivisions       = get_list<unsigned int>(prm, "Subdivisions", dim, context);
+    center             = get_list<double>(prm, "Center", dim, context);
+    radius             = prm.get_double("Radius");
+    boundary_id_offset = prm.get_integer("Boundary id offset");
+
+    if (shape == Shape::rectangle)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!(upper_corner[d] > lower_corner[d]))
+          throw InputError(context + " > Upper corner",
+                           "must be above 'Lower corner' in every "
+                           "direction, got lower = '" +
+                             prm.get("Lower corner") + "', upper = '" +
+                             prm.get("Upper corner") + "'");
+    if (shape != Shape::rectangle)
+      {
+        if (dim != 2)
+          throw InputError(context + " > Shape",
+                           "'" + s + "' is a 2D shape; in 3D use a "
+                           "rectangle or a Gmsh mesh");
+        if (!(radius > 0.))
+          throw InputError(context + " > Radius",
+                           "must be > 0, got " + prm.get("Radius"));
+      }
+  }
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Source",
+                      "generated",
+                      Patterns::Selection("generated|gmsh"),
+                      "generated: each body builds its own coarse mesh from "
+                      "its Geometry subsection. gmsh: one Gmsh file holds "
+                      "every body; its physical tags give the material ids "
+                      "(which select the bodies) and the boundary ids.");
+    prm.declare_entry("Gmsh file",
+                      "",
+                      Patterns::Anything(),
+                      "Gmsh .msh file (relative paths are relative to the "
+                      "parameter file).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 20),
+                      "Number of uniform refinements of the coarse mesh.");
+  }
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler  &prm,
+                                   const std::string &prm_directory)
+  {
+    source = (prm.get("Source") == "gmsh" ? Source::gmsh : Source::generated);
+    gmsh_file = prm.get("Gmsh file");
+    if (source == Source::gmsh)
+      {
+        if (gmsh_file.empty())
+          throw InputError("Mesh > Gmsh file",
+                           "is empty, but Mesh > Source = gmsh");
+        if (gmsh_file[0] != '/' && !prm_directory.empty())
+          gmsh_file = prm_directory + "/" + gmsh_file;
+      }
+    global_refinements = prm.get_integer("Global refinements");
+  }
+
+  namespace
+  {
+    /// A manifold to attach to the final mesh.
+    template <int dim>
+    struct ManifoldSpec
+    {
+      types::manifold_id id;
+      bool               transfinite;
+      Point<dim>         center;
+    };
+
+    template <int dim>
+    Point<dim>
+    to_point(const std::vector<double> &v)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = v[d];
+      return p;
+    }
+
+    /**
+     * Build one body's coarse mesh. Disks are generated around the origin
+     * as the upper right quarter/right half that deal.II provides, rotated
+     * by -90 degrees (x, y) -> (y, -x) (a rotation keeps the cells
+     * positively oriented, a reflection would not), and shifted to the
+     * center.
+     */
+    template <int dim>
+    void
+    build_body(const BodyGeometry             &g,
+               const types::material_id        material_id,
+               const unsigned int              body_index,
+               Triangulation<dim>             &tria,
+               std::vector<ManifoldSpec<dim>> &manifolds)
+    {
+      if (g.shape == BodyGeometry::Shape::rectangle)
+        {
+          GridGenerator::subdivided_hyper_rectangle(tria,
+                                                    g.subdivisions,
+                                                    to_point<dim>(g.lower_corner),
+                                                    to_point<dim>(g.upper_corner),
+                                                    /*colorize=*/true);
+          tria.reset_all_manifolds();
+          for (const auto &cell : tria.active_cell_iterators())
+            cell->set_all_manifold_ids(numbers::flat_manifold_id);
+        }
+      else
+        {
+          Assert(dim == 2, ExcInternalError());
+          const Point<dim> origin;
+          if (g.shape == BodyGeometry::Shape::quarter_disk)
+            GridGenerator::quarter_hyper_ball(tria, origin, g.radius);
+          else
+            GridGenerator::half_hyper_ball(tria, origin, g.radius);
+          tria.reset_all_manifolds();
+          const Point<dim> center = to_point<dim>(g.center);
+          GridTools::transform(
+            [&](const Point<dim> &p) {
+              Point<dim> q = center;
+              q[0] += p[1];
+              q[1] -= p[0];
+              return q;
+            },
+            tria);
+
+          const types::manifold_id arc_id         = 2 * body_index;
+          const types::manifold_id transfinite_id = 2 * body_index + 1;
+          const double             tol            = 1e-8 * g.radius;
+          for (const auto &cell : tria.active_cell_iterators())
+            {
+              cell->set_all_manifold_ids(transfinite_id);
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary())
+                  {
+                    const Point<dim> c = face->center();
+                    // A straight edge through the center, or the arc.
+                    if (std::abs(c[1] - center[1]) < tol)
+                      face->set_boundary_id(
+                        g.shape == BodyGeometry::Shape::quarter_disk ? 2 : 1);
+                    else if (std::abs(c[0] - center[0]) < tol)
+                      face->set_boundary_id(1);
+                    else
+                      {
+                        face->set_boundary_id(0);
+                        face->set_manifold_id(arc_id);
+                      }
+                  }
+            }
+          manifolds.push_back({arc_id, false, center});
+          manifolds.push_back({transfinite_id, true, center});
+        }
+
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          cell->set_material_id(material_id);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              face->set_boundary_id(face->boundary_id() + g.boundary_id_offset);
+        }
+    }
+
+    /**
+     * Put the coarse cells of every part into @p result, keeping each
+     * part's vertices separate (no vertex merging), with material,
+     * boundary and manifold ids.
+     */
+    template <int dim>
+    void
+    combine(const std::vector<std::unique_ptr<Triangulation<dim>>> &parts,
+            Triangulation<dim>                                     &result)
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      SubCellData                subcells;
+      for (const auto &part : parts)
+        {
+          const unsigned int offset = vertices.size();
+          const auto        &v      = part->get_vertices();
+          vertices.insert(vertices.end(), v.begin(), v.end());
+          for (const auto &cell : part->active_cell_iterators())
+            {
+              CellData<dim> c;
+              for (unsigned int i = 0; i < cell->n_vertices(); ++i)
+                c.vertices[i] = offset + cell->vertex_index(i);
+              c.material_id = cell->material_id();
+              c.manifold_id = cell->manifold_id();
+              cells.push_back(c);
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary() ||
+                    face->manifold_id() != numbers::flat_manifold_id)
+                  {
+                    CellData<dim - 1> f;
+                    for (unsigned int i = 0; i < face->n_vertices(); ++i)
+                      f.vertices[i] = offset + face->vertex_index(i);
+                    f.boundary_id = face->at_boundary() ?
+                                      face->boundary_id() :
+                                      numbers::internal_face_boundary_id;
+                    f.manifold_id = face->manifold_id();
+                    if constexpr (dim == 2)
+                      subcells.boundary_lines.push_back(f);
+                    else
+                      subcells.boundary_quads.push_back(f);
+                  }
+            }
+        }
+      GridTools::delete_unused_vertices(vertices, cells, subcells);
+      result.create_triangulation(vertices, cells, subcells);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  build_scene_mesh(const MeshParameters                      &mesh,
+                   const std::vector<BodyGeometry>           &bodies,
+                   const std::vector<types::material_id>     &material_ids,
+                   parallel::distributed::Triangulation<dim> &tria)
+  {
+    std::vector<ManifoldSpec<dim>> manifolds;
+    if (mesh.source == MeshParameters::Source::gmsh)
+      {
+        std::ifstream in(mesh.gmsh_file);
+        if (!in)
+          throw InputError("Mesh > Gmsh file",
+                           "cannot open '" + mesh.gmsh_file + "'");
+        if (in.peek() == std::ifstream::traits_type::eof())
+          throw InputError(mesh.gmsh_file, "the mesh file is empty");
+        Triangulation<dim> serial;
+        GridIn<dim>        grid_in(serial);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError(mesh.gmsh_file,
+                             std::string("cannot read the Gmsh mesh: ") +
+                               e.what());
+          }
+        if (serial.n_active_cells() == 0)
+          throw InputError(mesh.gmsh_file, "the mesh has no cells");
+        tria.copy_triangulation(serial);
+      }
+    else
+      {
+        std::vector<std::unique_ptr<Triangulation<dim>>> parts;
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            parts.push_back(std::make_unique<Triangulation<dim>>());
+            build_body(bodies[b], material_ids[b], b, *parts.back(), manifolds);
+          }
+        combine(parts, tria);
+      }
+
+    for (const auto &m : manifolds)
+      if (m.transfinite)
+        {
+          TransfiniteInterpolationManifold<dim> transfinite;
+          transfinite.initialize(tria);
+          tria.set_manifold(m.id, transfinite);
+        }
+      else
+        tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
+
+    tria.refine_global(mesh.global_refinements);
+  }
+
+  template void
+  build_scene_mesh<2>(const MeshParameters &,
+                      const std::vector<BodyGeometry> &,
+                      const std::vector<types::material_id> &,
+                      parallel::distributed::Triangulation<2> &);
+  template void
+  build_scene_mesh<3>(const MeshParameters &,
+                      const std::vector<BodyGeometry> &,
+                      const std::vector<types::material_id> &,
+                      parallel::distributed::Triangulation<3> &);
+} // namespace Signorini

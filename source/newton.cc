@@ -1,0 +1,323 @@
+#include <signorini/newton.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace Signorini
+{
+  void
+  NewtonMinimizer::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Maximum iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Newton iterations per load step before the step is "
+                      "cut.");
+    prm.declare_entry("Residual tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Converged when |gradient|_2 <= this * force scale, "
+                      "the force scale being sqrt(sum over cells of "
+                      "|f_int,K|^2 + |f_ext,K|^2) (unit free).");
+    prm.declare_entry("Absolute tolerance",
+                      "1e-14",
+                      Patterns::Double(0.),
+                      "Converged also when |gradient|_2 <= this [force] "
+                      "(for unloaded states).");
+    prm.declare_entry("Energy tolerance",
+                      "1e-12",
+                      Patterns::Double(0.),
+                      "And when the last energy decrease is <= this * "
+                      "(|strain energy| + |external work|).");
+    prm.declare_entry("Armijo parameter",
+                      "1e-4",
+                      Patterns::Double(0., 0.5),
+                      "Sufficient decrease: E(u + a d) <= E(u) + c1 a g.d.");
+    prm.declare_entry("Backtracking factor",
+                      "0.5",
+                      Patterns::Double(0.05, 0.95),
+                      "Step length reduction per rejected trial.");
+    prm.declare_entry("Maximum backtracks",
+                      "30",
+                      Patterns::Integer(1, 200),
+                      "Trials per line search before the step is cut.");
+    prm.declare_entry("Initial shift",
+                      "1e-6",
+                      Patterns::Double(0.),
+                      "First relative diagonal shift tau of an indefinite "
+                      "Hessian (H + tau diag|H|), multiplied by 10 per "
+                      "retry.");
+    prm.declare_entry("Maximum shifts",
+                      "8",
+                      Patterns::Integer(0, 30),
+                      "Shift retries before steepest descent is used.");
+  }
+
+  void
+  NewtonMinimizer::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    max_iterations     = prm.get_integer("Maximum iterations");
+    residual_tolerance = prm.get_double("Residual tolerance");
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    energy_tolerance   = prm.get_double("Energy tolerance");
+    armijo_c1          = prm.get_double("Armijo parameter");
+    backtrack_factor   = prm.get_double("Backtracking factor");
+    max_backtracks     = prm.get_integer("Maximum backtracks");
+    initial_shift      = prm.get_double("Initial shift");
+    max_shifts         = prm.get_integer("Maximum shifts");
+  }
+
+  NewtonMinimizer::NewtonMinimizer(const Parameters   &parameters,
+                                   const LinearSolver &linear_solver,
+                                   ConditionalOStream &progress,
+                                   TimerOutput        &timer)
+    : parameters(parameters)
+    , linear_solver(linear_solver)
+    , progress(progress)
+    , timer(timer)
+  {}
+
+  bool
+  NewtonMinimizer::descent_direction(const AffineConstraints<double> &constraints,
+                                     MatrixType                      &hessian,
+                                     const VectorType                &rhs,
+                                     VectorType                      &d,
+                                     Statistics                      &statistics)
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    const double       rhs_norm = rhs.l2_norm();
+
+    // Is d a descent direction for E? (g = -rhs, so g.d = -rhs.d.)
+    auto is_descent = [&](const VectorType &dir) {
+      const double slope = rhs * dir;
+      return std::isfinite(slope) && slope > 1e-12 * rhs_norm * dir.l2_norm();
+    };
+
+    LinearSolver::Info info;
+    std::string        message;
+    bool ok = linear_solver.solve(hessian, d, rhs, info, message);
+    statistics.linear_iterations += info.iterations;
+    statistics.linear_fallbacks += info.used_fallback;
+    if (ok)
+      {
+        constraints.distribute(d);
+        if (is_descent(d))
+          return true;
+      }
+
+    // Regularise: shift the diagonal by tau |H_ii|.
+    ++statistics.regularized_steps;
+    const IndexSet      owned = rhs.locally_owned_elements();
+    std::vector<double> diagonal;
+    double              max_diagonal = 0.;
+    for (const auto i : owned)
+      {
+        diagonal.push_back(hessian.diag_element(i));
+        max_diagonal = std::max(max_diagonal, std::abs(diagonal.back()));
+      }
+    max_diagonal =
+      Utilities::MPI::max(max_diagonal, rhs.get_mpi_communicator());
+    double tau = parameters.initial_shift;
+    for (unsigned int s = 0; s < parameters.max_shifts; ++s, tau *= 10.)
+      {
+        unsigned int k = 0;
+        for (const auto i : owned)
+          {
+            const double h = std::max(std::abs(diagonal[k]), 1e-12 * max_diagonal);
+            hessian.set(i, i, diagonal[k] + tau * h);
+            ++k;
+          }
+        hessian.compress(VectorOperation::insert);
+        progress << "      Hessian not positive definite: shift tau = "
+                 << tau << std::endl;
+        ok = linear_solver.solve(hessian, d, rhs, info, message);
+        statistics.linear_iterations += info.iterations;
+        if (ok)
+          {
+            constraints.distribute(d);
+            if (is_descent(d))
+              return true;
+          }
+      }
+
+    // Steepest descent, scaled by the largest diagonal entry.
+    progress << "      using the steepest descent direction" << std::endl;
+    d = rhs;
+    if (max_diagonal > 0.)
+      d /= max_diagonal;
+    constraints.distribute(d);
+    return is_descent(d);
+  }
+
+  NewtonMinimizer::Statistics
+  NewtonMinimizer::minimize(Objective                       &objective,
+                            const AffineConstraints<double> &constraints,
+                            VectorType                      &u,
+                            VectorType                      &ghosted,
+                            MatrixType                      &hessian,
+                            VectorType                      &rhs)
+  {
+    Statistics statistics;
+    VectorType d(u), trial(u);
+
+    auto full_evaluation = [&]() {
+      TimerOutput::Scope scope(timer, "assembly");
+      ghosted = u;
+      return objective.evaluate(ghosted, constraints, &rhs, &hessian);
+    };
+
+    Evaluation e = full_evaluation();
+    if (!e.admissible)
+      {
+        statistics.reason = "the initial state is inadmissible (min J = " +
+                            std::to_string(e.min_J) + ")";
+        statistics.evaluation = e;
+        return statistics;
+      }
+
+    double last_decrease = std::numeric_limits<double>::infinity();
+    for (unsigned int it = 0;; ++it)
+      {
+        const double residual = rhs.l2_norm();
+        const double tolerance =
+          std::max(parameters.residual_tolerance * e.force_scale,
+                   parameters.absolute_tolerance);
+        const double energy_scale =
+          std::abs(e.strain_energy) + std::abs(e.external_work);
+        statistics.iterations  = it;
+        statistics.residual    = residual;
+        statistics.force_scale = e.force_scale;
+        statistics.evaluation  = e;
+
+        {
+          std::ostringstream line;
+          line << "    it " << std::setw(2) << it << "  |g| "
+               << std::scientific << std::setprecision(3) << residual
+               << "  |g|/scale " << residual / std::max(e.force_scale, 1e-300)
+               << "  E " << std::setprecision(10) << e.value
+               << "  min J " << std::setprecision(4) << e.min_J;
+          progress << line.str() << std::endl;
+        }
+
+        if (!std::isfinite(residual))
+          {
+            statistics.reason = "the gradient is not finite";
+            return statistics;
+          }
+        const bool energy_converged =
+          (it > 0 &&
+           std::abs(last_decrease) <= parameters.energy_tolerance * energy_scale);
+        if (residual <= tolerance && (it == 0 || energy_converged ||
+                                      residual <= parameters.absolute_tolerance))
+          {
+            statistics.converged = true;
+            return statistics;
+          }
+        if (it == parameters.max_iterations)
+          {
+            std::ostringstream msg;
+            msg << "no convergence in " << it << " Newton iterations (|g| = "
+                << residual << ", tolerance " << tolerance << ")";
+            statistics.reason = msg.str();
+            return statistics;
+          }
+
+        if (!descent_direction(constraints, hessian, rhs, d, statistics))
+          {
+            statistics.reason = "no descent direction found";
+            return statistics;
+          }
+
+        // Backtracking line search on the energy.
+        TimerOutput::Scope scope(timer, "line search");
+        const double slope = -(rhs * d); // g.d < 0
+        const double       noise =
+          1e3 * std::numeric_limits<double>::epsilon() * (energy_scale + std::abs(e.value));
+        double alpha    = 1.;
+        bool   accepted = false;
+        Evaluation trial_e;
+        for (unsigned int k = 0; k <= parameters.max_backtracks; ++k)
+          {
+            trial = u;
+            trial.add(alpha, d);
+            ghosted = trial;
+            trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+            if (trial_e.admissible &&
+                (trial_e.value <= e.value + parameters.armijo_c1 * alpha * slope ||
+                 // near convergence the decrease drowns in round-off:
+                 // accept a full step that does not increase E beyond it
+                 (alpha == 1. && -slope <= noise && trial_e.value <= e.value + noise)))
+              {
+                accepted = true;
+                break;
+              }
+            ++statistics.backtracks;
+            alpha *= parameters.backtrack_factor;
+          }
+        if (!accepted)
+          {
+            statistics.reason =
+              "the line search found no admissible decrease of the energy "
+              "after " + std::to_string(parameters.max_backtracks) +
+              " backtracks";
+            return statistics;
+          }
+        scope.stop();
+        if (alpha < 1.)
+          progress << "      line search: step length " << alpha << std::endl;
+        last_decrease = e.value - trial_e.value;
+        u             = trial;
+        e             = full_evaluation();
+        if (!e.admissible)
+          {
+            statistics.reason = "inadmissible state after the line search";
+            return statistics;
+          }
+      }
+  }
+
+  bool
+  NewtonMinimizer::predictor(Objective                       &objective,
+                             const AffineConstraints<double> &constraints,
+                             VectorType                      &u,
+                             VectorType                      &ghosted,
+                             MatrixType                      &hessian,
+                             VectorType                      &rhs,
+                             std::string                     &reason)
+  {
+    Evaluation e;
+    {
+      TimerOutput::Scope scope(timer, "assembly");
+      ghosted = u;
+      e       = objective.evaluate(ghosted, constraints, &rhs, &hessian);
+    }
+    if (!e.admissible)
+      {
+        reason = "inadmissible state before the predictor";
+        return false;
+      }
+    VectorType         d(u);
+    LinearSolver::Info info;
+    {
+      TimerOutput::Scope scope(timer, "linear solve");
+      if (!linear_solver.solve(hessian, d, rhs, info, reason))
+        return false;
+    }
+    constraints.distribute(d);
+    VectorType trial(u);
+    trial += d;
+    {
+      TimerOutput::Scope scope(timer, "line search");
+      ghosted = trial;
+      e       = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+    }
+    if (!e.admissible)
+      {
+        reason = "the predictor step inverts elements (min J = " +
+                 std::to_string(e.min_J) + ")";
+        return false;
+      }
+    u = trial;
+    return true;
+  }
+} // namespace Signorini

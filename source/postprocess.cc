@@ -1,0 +1,387 @@
+#include <signorini/input_error.h>
+#include <signorini/postprocess.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <fstream>
+#include <iomanip>
+
+namespace Signorini
+{
+  namespace
+  {
+    /**
+     * J, Cauchy stress sigma = P F^T / J (sigma_zz separately in plane
+     * strain), von Mises stress and the mean pressure -tr(sigma)/3, from
+     * the displacement gradient and the cell's material.
+     */
+    template <int dim>
+    class StressOutput : public DataPostprocessor<dim>
+    {
+    public:
+      explicit StressOutput(
+        const std::map<types::material_id, const Material::Interface *> &materials)
+        : materials(materials)
+      {}
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        std::vector<std::string> names = {"J"};
+        for (unsigned int i = 0; i < dim * dim; ++i)
+          names.emplace_back("cauchy_stress");
+        if (dim == 2)
+          names.emplace_back("sigma_zz");
+        names.emplace_back("von_mises");
+        names.emplace_back("pressure");
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(1, DataComponentInterpretation::component_is_scalar);
+        for (unsigned int i = 0; i < dim * dim; ++i)
+          interpretation.push_back(
+            DataComponentInterpretation::component_is_part_of_tensor);
+        for (unsigned int i = 0; i < (dim == 2 ? 3u : 2u); ++i)
+          interpretation.push_back(
+            DataComponentInterpretation::component_is_scalar);
+        return interpretation;
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients;
+      }
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        const auto cell = inputs.template get_cell<dim>();
+        const Material::Interface &material =
+          *materials.at(cell->material_id());
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          {
+            Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+            for (unsigned int i = 0; i < dim; ++i)
+              F[i] += inputs.solution_gradients[q][i];
+            const Tensor<2, 3> sigma = Material::cauchy_stress(material, F);
+            unsigned int       k     = 0;
+            computed[q][k++]         = determinant(F);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                computed[q][k++] = sigma[i][j];
+            if (dim == 2)
+              computed[q][k++] = sigma[2][2];
+            const double p = trace(sigma) / 3.;
+            Tensor<2, 3> s = sigma;
+            for (unsigned int i = 0; i < 3; ++i)
+              s[i][i] -= p;
+            computed[q][k++] = std::sqrt(1.5 * scalar_product(s, s));
+            computed[q][k++] = -p;
+          }
+      }
+
+    private:
+      const std::map<types::material_id, const Material::Interface *> &materials;
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  Postprocessor<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    {
+      prm.enter_subsection("Mean boundary displacement");
+      prm.declare_entry("Boundary id",
+                        "-1",
+                        Patterns::Integer(-1, 255),
+                        "Report the mean displacement component over this "
+                        "boundary (area-weighted, reference configuration); "
+                        "-1: not reported.");
+      prm.declare_entry("Component",
+                        "y",
+                        Patterns::Selection("x|y|z"),
+                        "Displacement component.");
+      prm.declare_entry("Name",
+                        "mean_displacement",
+                        Patterns::Anything(),
+                        "Name of the quantity in summary.json.");
+      prm.declare_entry("Reference value",
+                        "",
+                        Patterns::Anything(),
+                        "Reference value [length] (empty: none); summary.json "
+                        "then carries the relative error.");
+      prm.declare_entry("Relative tolerance",
+                        "0",
+                        Patterns::Double(0.),
+                        "If > 0 and a reference is given, a run whose "
+                        "relative error exceeds it is reported as outside "
+                        "tolerance (and the test driver fails).");
+      prm.leave_subsection();
+
+      prm.declare_entry("Reaction boundaries",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Report the reaction force (force of the supports on "
+                        "the body, summed over the boundary's degrees of "
+                        "freedom) on these Dirichlet boundary ids, per load "
+                        "step in reactions.csv and at the end in "
+                        "summary.json.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Format",
+                        "vtu",
+                        Patterns::Selection("vtu|hdf5|none"),
+                        "vtu: one .vtu per rank and a .pvtu per step with a "
+                        "solution.pvd series for ParaView. hdf5: one .h5 per "
+                        "step and a solution.xdmf series. none: no fields "
+                        "(summary.json and CSV are always written).");
+      prm.declare_entry("Interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Write fields every this many load steps (the last "
+                        "step is always written).");
+      prm.declare_entry("Verbosity",
+                        "normal",
+                        Patterns::Selection("quiet|normal|verbose"),
+                        "quiet: errors only. normal: one line per load step "
+                        "and per Newton iteration. verbose: also the "
+                        "Hessian regularisation and the timing table.");
+    }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  Postprocessor<dim>::Postprocessor(
+    ParameterHandler                                                &prm,
+    const DoFHandler<dim>                                           &dof_handler,
+    const Mapping<dim>                                              &mapping,
+    const std::map<types::material_id, const Material::Interface *> &materials,
+    const EnergyFunctional<dim>                                     &energy,
+    const AffineConstraints<double>                                 &hanging_constraints,
+    const std::set<types::boundary_id>                              &mesh_ids,
+    const std::string                                               &output_directory)
+    : dof_handler(dof_handler)
+    , mapping(mapping)
+    , materials(materials)
+    , energy(energy)
+    , hanging_constraints(hanging_constraints)
+    , output_directory(output_directory)
+  {
+    prm.enter_subsection("Postprocess");
+    {
+      prm.enter_subsection("Mean boundary displacement");
+      mean_displacement_boundary = prm.get_integer("Boundary id");
+      const std::string comp     = prm.get("Component");
+      mean_displacement_component = (comp == "x" ? 0 : comp == "y" ? 1 : 2);
+      if (mean_displacement_component >= dim)
+        throw InputError("Postprocess > Mean boundary displacement > Component",
+                         "z does not exist in 2D");
+      if (mean_displacement_boundary >= 0 &&
+          mesh_ids.count(mean_displacement_boundary) == 0)
+        throw InputError("Postprocess > Mean boundary displacement > Boundary id",
+                         "boundary id " + prm.get("Boundary id") +
+                           " does not exist in the mesh");
+      mean_displacement_name = prm.get("Name");
+      const std::string ref  = prm.get("Reference value");
+      if (!ref.empty())
+        {
+          try
+            {
+              reference = Utilities::string_to_double(ref);
+            }
+          catch (...)
+            {
+              throw InputError(
+                "Postprocess > Mean boundary displacement > Reference value",
+                "'" + ref + "' is not a number");
+            }
+          has_reference = true;
+        }
+      tolerance = prm.get_double("Relative tolerance");
+      prm.leave_subsection();
+
+      for (const auto &s :
+           Utilities::split_string_list(prm.get("Reaction boundaries")))
+        {
+          const int id = Utilities::string_to_int(s);
+          if (mesh_ids.count(id) == 0)
+            throw InputError("Postprocess > Reaction boundaries",
+                             "boundary id " + s + " does not exist in the mesh");
+          reaction_boundaries.push_back(id);
+        }
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    format           = prm.get("Format");
+    interval         = prm.get_integer("Interval");
+    screen_verbosity = prm.get("Verbosity");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::vector<Quantity>
+  Postprocessor<dim>::compute_quantities(const VectorType &u, const double time)
+  {
+    std::vector<Quantity> quantities;
+    const MPI_Comm        comm = dof_handler.get_communicator();
+
+    if (mean_displacement_boundary >= 0)
+      {
+        FEFaceValues<dim> fe_face(mapping,
+                                  dof_handler.get_fe(),
+                                  QGauss<dim - 1>(dof_handler.get_fe().degree + 1),
+                                  update_values | update_JxW_values);
+        const FEValuesExtractors::Scalar component(mean_displacement_component);
+        std::vector<double>              values(fe_face.n_quadrature_points);
+        double                           integral = 0., area = 0.;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == mean_displacement_boundary)
+                {
+                  fe_face.reinit(cell, f);
+                  fe_face[component].get_function_values(u, values);
+                  for (unsigned int q = 0; q < values.size(); ++q)
+                    {
+                      integral += values[q] * fe_face.JxW(q);
+                      area += fe_face.JxW(q);
+                    }
+                }
+        integral = Utilities::MPI::sum(integral, comm);
+        area     = Utilities::MPI::sum(area, comm);
+        Quantity q;
+        q.name          = mean_displacement_name;
+        q.value         = integral / area;
+        q.has_reference = has_reference;
+        q.reference     = reference;
+        q.tolerance     = tolerance;
+        quantities.push_back(q);
+      }
+
+    if (!reaction_boundaries.empty())
+      {
+        // Reaction = f_int - f_ext at the boundary's degrees of freedom,
+        // i.e. minus the unconstrained residual (hanging nodes condensed).
+        VectorType residual(dof_handler.locally_owned_dofs(), comm);
+        energy.evaluate(u, time, hanging_constraints, &residual, nullptr);
+        std::vector<double> sums;
+        for (const auto id : reaction_boundaries)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              ComponentMask mask(dim, false);
+              mask.set(c, true);
+              IndexSet dofs = DoFTools::extract_boundary_dofs(dof_handler, mask, {id});
+              dofs = dofs & dof_handler.locally_owned_dofs();
+              double sum = 0.;
+              for (const auto i : dofs)
+                sum -= residual[i];
+              sums.push_back(Utilities::MPI::sum(sum, comm));
+              Quantity q;
+              q.name  = std::string("reaction_") + "xyz"[c] + "_boundary_" +
+                       std::to_string(id);
+              q.value = sums.back();
+              quantities.push_back(q);
+            }
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream csv(output_directory + "/reactions.csv",
+                              reactions_header_written ? std::ios::app :
+                                                         std::ios::trunc);
+            if (!reactions_header_written)
+              {
+                csv << "time";
+                for (const auto id : reaction_boundaries)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    csv << ",R" << "xyz"[c] << "_" << id;
+                csv << "\n";
+                reactions_header_written = true;
+              }
+            csv << std::setprecision(12) << time;
+            for (const double s : sums)
+              csv << "," << s;
+            csv << "\n";
+          }
+      }
+    return quantities;
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::write_output(const VectorType  &u,
+                                   const double       time,
+                                   const unsigned int step,
+                                   const bool         last_step)
+  {
+    if (format == "none" || (step % interval != 0 && !last_step))
+      return;
+    const MPI_Comm         comm = dof_handler.get_communicator();
+    const StressOutput<dim> stress(materials);
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(u,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    data_out.add_data_vector(u, stress);
+
+    const auto &tria = dof_handler.get_triangulation();
+    Vector<float> material_id(tria.n_active_cells()), rank(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          material_id[cell->active_cell_index()] = cell->material_id();
+          rank[cell->active_cell_index()]        = cell->subdomain_id();
+        }
+    data_out.add_data_vector(material_id, "material_id");
+    data_out.add_data_vector(rank, "mpi_rank");
+    const unsigned int degree = dof_handler.get_fe().degree;
+    data_out.build_patches(mapping, degree, DataOut<dim>::curved_inner_cells);
+
+    if (format == "vtu")
+      {
+        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+          output_directory + "/", "solution", step, comm, 4);
+        pvd_records.emplace_back(time, pvtu);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream pvd(output_directory + "/solution.pvd");
+            DataOutBase::write_pvd_record(pvd, pvd_records);
+          }
+      }
+    else
+      {
+        DataOutBase::DataOutFilter filter(
+          DataOutBase::DataOutFilterFlags(false, true));
+        data_out.write_filtered_data(filter);
+        const std::string h5 =
+          "solution-" + Utilities::int_to_string(step, 4) + ".h5";
+        data_out.write_hdf5_parallel(filter, output_directory + "/" + h5, comm);
+        xdmf_entries.push_back(data_out.create_xdmf_entry(filter, h5, time, comm));
+        data_out.write_xdmf_file(xdmf_entries,
+                                 output_directory + "/solution.xdmf",
+                                 comm);
+      }
+  }
+
+  template class Postprocessor<2>;
+  template class Postprocessor<3>;
+} // namespace Signorini
