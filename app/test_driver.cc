@@ -4,7 +4,9 @@
 // and a tolerance says whether it is within it.
 #include <signorini/run.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 int
@@ -20,7 +22,9 @@ main(int argc, char **argv)
       std::printf("load steps: %zu\n", report.steps.size());
       for (const auto &q : report.quantities)
         {
-          std::printf("%s: %.6g\n", q.name.c_str(), q.value);
+          // Round-off (e.g. a reaction that vanishes by symmetry) prints as 0.
+          const double value = std::abs(q.value) < 1e-10 ? 0. : q.value;
+          std::printf("%s: %.6g\n", q.name.c_str(), value);
           if (q.has_reference && q.tolerance > 0.)
             std::printf("%s within relative tolerance %.0e of %.7g: %s\n",
                         q.name.c_str(),
@@ -28,6 +32,10 @@ main(int argc, char **argv)
                         q.reference,
                         q.within_tolerance() ? "yes" : "NO");
         }
+      for (const char *f : {"summary.json", "used_parameters.prm", "load_steps.csv"})
+        std::printf("%s written: %s\n", f,
+                    std::filesystem::exists(report.output_directory + "/" + f) ?
+                      "yes" : "NO");
       std::fflush(stdout);
     });
 }

@@ -127,7 +127,9 @@ namespace Signorini
         c.matrix.reinit(dofs_per_cell, dofs_per_cell);
 
       const auto material_it = materials.find(cell->material_id());
-      Assert(material_it != materials.end(), ExcInternalError());
+      AssertThrow(material_it != materials.end(),
+                  ExcMessage("no material for material id " +
+                             std::to_string(cell->material_id())));
       const Material::Interface &material = *material_it->second;
 
       s.grads.resize(n_q);

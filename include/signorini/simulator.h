@@ -121,7 +121,10 @@ namespace Signorini
     MPI_Comm           comm;
     ConditionalOStream pcout;
     ConditionalOStream progress;
-    TimerOutput        timer;
+    // Created once the input is checked: a TimerOutput destroyed during
+    // exception unwinding would print a notice over the error message.
+    std::unique_ptr<TimerOutput> timer;
+    double                       setup_seconds = 0.;
 
     // Parameters.
     std::string                 output_directory;

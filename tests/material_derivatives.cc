@@ -1,0 +1,213 @@
+// Finite-difference checks of every material law: P = dpsi/dF and the
+// tangent A = dP/dF at random deformation gradients with J > 0, in plane
+// strain (2D) and 3D; zero stress at F = I; frame invariance
+// psi(QF) = psi(F), P(QF) = Q P(F); major symmetry of A. The checker is
+// also run on a deliberately corrupted tangent and must reject it, so this
+// test can fail.
+
+#include <signorini/material/interface.h>
+#include <signorini/material/invariant_based.h>
+#include <signorini/material/laws.h>
+#include <signorini/material/linear_elastic.h>
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <fstream>
+#include <iostream>
+#include <random>
+
+using namespace dealii;
+using namespace Signorini;
+
+namespace
+{
+  /// A material whose tangent is wrong by 1e-3 relative in one entry.
+  class CorruptedTangent : public Material::Interface
+  {
+  public:
+    explicit CorruptedTangent(const Material::Interface &base)
+      : base(base)
+    {}
+    bool
+    evaluate(const Tensor<2, 3> &F, Material::Response<3> &r, bool d) const override
+    {
+      const bool ok = base.evaluate(F, r, d);
+      if (d)
+        r.A[0][1][1][0] *= 1.001;
+      return ok;
+    }
+    std::string
+    name() const override
+    {
+      return "corrupted";
+    }
+    std::pair<double, double>
+    small_strain_lame() const override
+    {
+      return base.small_strain_lame();
+    }
+
+  private:
+    const Material::Interface &base;
+  };
+
+  template <int dim>
+  Tensor<2, dim>
+  random_F(std::mt19937 &rng, const double amplitude)
+  {
+    std::uniform_real_distribution<double> u(-amplitude, amplitude);
+    for (;;)
+      {
+        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] += u(rng);
+        if (determinant(F) > 0.3)
+          return F;
+      }
+  }
+
+  /// Largest relative error of P and of A against central differences.
+  template <int dim>
+  std::pair<double, double>
+  fd_errors(const Material::Interface &m, const Tensor<2, dim> &F)
+  {
+    Material::Response<dim> r, rp, rm;
+    AssertThrow(Material::evaluate(m, F, r, true), ExcInternalError());
+    const double h     = 1e-6;
+    double       err_P = 0., err_A = 0., scale_P = 0., scale_A = 0.;
+    for (unsigned int k = 0; k < dim; ++k)
+      for (unsigned int l = 0; l < dim; ++l)
+        {
+          Tensor<2, dim> Fp = F, Fm = F;
+          Fp[k][l] += h;
+          Fm[k][l] -= h;
+          Material::evaluate(m, Fp, rp, true);
+          Material::evaluate(m, Fm, rm, true);
+          const double dpsi = (rp.psi - rm.psi) / (2 * h);
+          err_P   = std::max(err_P, std::abs(dpsi - r.P[k][l]));
+          scale_P = std::max(scale_P, std::abs(r.P[k][l]));
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              {
+                const double dP = (rp.P[i][j] - rm.P[i][j]) / (2 * h);
+                err_A   = std::max(err_A, std::abs(dP - r.A[i][j][k][l]));
+                scale_A = std::max(scale_A, std::abs(r.A[i][j][k][l]));
+              }
+        }
+    return {err_P / std::max(scale_P, 1e-12), err_A / std::max(scale_A, 1e-12)};
+  }
+
+  template <int dim>
+  Tensor<2, dim>
+  rotation(const double angle)
+  {
+    Tensor<2, dim> Q = unit_symmetric_tensor<dim>();
+    Q[0][0] = Q[1][1] = std::cos(angle);
+    Q[0][1]           = -std::sin(angle);
+    Q[1][0]           = std::sin(angle);
+    if constexpr (dim == 3)
+      {
+        // and a second rotation about x
+        Tensor<2, 3> R = unit_symmetric_tensor<3>();
+        R[1][1] = R[2][2] = std::cos(0.7);
+        R[1][2]           = -std::sin(0.7);
+        R[2][1]           = std::sin(0.7);
+        Q                 = R * Q;
+      }
+    return Q;
+  }
+
+  template <int dim>
+  void
+  check(const std::string &label, const Material::Interface &m, std::ostream &out)
+  {
+    std::mt19937 rng(42);
+    double       worst_P = 0., worst_A = 0., worst_frame = 0., worst_sym = 0.;
+    for (unsigned int sample = 0; sample < 20; ++sample)
+      {
+        const Tensor<2, dim> F = random_F<dim>(rng, 0.3);
+        const auto           e = fd_errors<dim>(m, F);
+        worst_P                = std::max(worst_P, e.first);
+        worst_A                = std::max(worst_A, e.second);
+
+        Material::Response<dim> r, rq;
+        Material::evaluate(m, F, r, true);
+        const Tensor<2, dim> Q = rotation<dim>(0.3 + sample);
+        Material::evaluate(m, Tensor<2, dim>(Q * F), rq, true);
+        const double scale = std::max(r.P.norm(), 1e-12);
+        worst_frame = std::max(worst_frame, std::abs(rq.psi - r.psi) / std::max(std::abs(r.psi), 1e-12));
+        worst_frame = std::max(worst_frame, (rq.P - Q * r.P).norm() / scale);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                worst_sym = std::max(worst_sym,
+                                     std::abs(r.A[i][j][k][l] - r.A[k][l][i][j]) /
+                                       std::max(r.A.norm(), 1e-12));
+      }
+    Material::Response<dim> r0;
+    Material::evaluate(m, Tensor<2, dim>(unit_symmetric_tensor<dim>()), r0, true);
+    const bool frame_ok = label.find("linear elastic") != std::string::npos ||
+                          worst_frame < 1e-12;
+    out << dim << "D " << label << ": P vs FD " << (worst_P < 1e-6 ? "ok" : "FAIL")
+        << ", A vs FD " << (worst_A < 1e-6 ? "ok" : "FAIL")
+        << ", zero stress at F = I " << (r0.P.norm() < 1e-12 && std::abs(r0.psi) < 1e-12 ? "ok" : "FAIL")
+        << ", frame invariance " << (frame_ok ? "ok" : "FAIL")
+        << ", major symmetry " << (worst_sym < 1e-13 ? "ok" : "FAIL") << "\n";
+    if (worst_P >= 1e-6 || worst_A >= 1e-6)
+      std::cerr << label << ": FD errors " << worst_P << " " << worst_A << "\n";
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  const double  E = 3.0, nu = 0.3;
+  const double  mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+
+  using namespace Material;
+  InvariantLaw<NeoHookeanLaw> neo(NeoHookeanLaw{mu, lambda});
+  InvariantLaw<ElasHyperLaw>  aster_neo(ElasHyperLaw{1.2345, 0., 0., 1234.5, true});
+  InvariantLaw<ElasHyperLaw>  mooney(ElasHyperLaw{0.709, 2.3456, 0., 2000., true});
+  InvariantLaw<ElasHyperLaw>  c20(ElasHyperLaw{0.1234, 1.2345, 0.456, 500., true});
+  InvariantLaw<ElasHyperLaw>  isochoric(ElasHyperLaw{0.709, 2.3456, 0.456, 0., false});
+  InvariantLaw<SaintVenantKirchhoffLaw> svk(SaintVenantKirchhoffLaw{mu, lambda});
+  LinearElastic linear(mu, lambda);
+
+  const std::vector<std::pair<std::string, const Interface *>> laws = {
+    {"neo-Hookean (ln J)", &neo},
+    {"ELAS_HYPER neo-Hookean", &aster_neo},
+    {"ELAS_HYPER Mooney-Rivlin", &mooney},
+    {"ELAS_HYPER C20", &c20},
+    {"ELAS_HYPER isochoric part", &isochoric},
+    {"Saint Venant-Kirchhoff", &svk},
+    {"linear elastic", &linear}};
+  for (const auto &law : laws)
+    {
+      check<2>(law.first, *law.second, out);
+      check<3>(law.first, *law.second, out);
+    }
+
+  // The small-strain limit of every finite-strain law is linear elasticity
+  // with its Lamé constants: compare the tangents at F = I.
+  for (const auto &law : laws)
+    {
+      const auto             lame = law.second->small_strain_lame();
+      LinearElastic          reference(lame.first, lame.second);
+      Response<3>            a, b;
+      const Tensor<2, 3>     I = unit_symmetric_tensor<3>();
+      law.second->evaluate(I, a, true);
+      reference.evaluate(I, b, true);
+      out << law.first << ": tangent at F = I equals the linear one with its "
+          << "Lame constants: " << ((a.A - b.A).norm() < 1e-10 * b.A.norm() ? "ok" : "FAIL")
+          << "\n";
+    }
+
+  // The checker must catch a tangent that is off by 1e-3 in one entry.
+  CorruptedTangent corrupted(mooney);
+  std::mt19937     rng(1);
+  const auto       e = fd_errors<3>(corrupted, random_F<3>(rng, 0.2));
+  out << "corrupted tangent detected: " << (e.second > 1e-6 ? "yes" : "NO") << "\n";
+}
