@@ -12,14 +12,19 @@
 int
 main(int argc, char **argv)
 {
-  return Signorini::run_program(
-    argc, argv, /*quiet=*/true, [](const Signorini::Report &report) {
+  bool      reported  = false;
+  const int exit_code = Signorini::run_program(
+    argc, argv, /*quiet=*/true, [&](const Signorini::Report &report) {
+      reported = true;
       std::printf("scene: %s\n", report.scene.c_str());
       std::printf("status: %s\n", report.status.c_str());
       std::printf("dimension: %u\n", report.dimension);
       std::printf("cells: %llu\n", report.n_cells);
       std::printf("dofs: %llu\n", report.n_dofs);
       std::printf("load steps: %zu\n", report.steps.size());
+      std::printf("final time: %.6g\n", report.final_time);
+      if (!report.reason.empty())
+        std::printf("reason: %s\n", report.reason.c_str());
       for (const auto &q : report.quantities)
         {
           // Round-off (e.g. a reaction that vanishes by symmetry) prints as 0.
@@ -38,4 +43,10 @@ main(int argc, char **argv)
                       "yes" : "NO");
       std::fflush(stdout);
     });
+  // A run that produced a report passes the run stage whatever its status;
+  // the status and exit code are in the compared output. Bad input and
+  // internal errors fail the run stage.
+  if (reported)
+    std::printf("exit code: %d\n", exit_code);
+  return reported ? 0 : exit_code;
 }

@@ -2,6 +2,9 @@
 #include <signorini/input_error.h>
 
 #include <deal.II/base/utilities.h>
+
+#include <iostream>
+#include <sstream>
 #include <deal.II/lac/vector.h>
 
 namespace Signorini
@@ -94,12 +97,17 @@ namespace Signorini
                          "'");
     const std::string variables = (dim == 2 ? "x,y,t" : "x,y,z,t");
     auto f = std::make_unique<FunctionParser<dim>>(dim);
+    // muparser writes its diagnostics to std::cerr before deal.II throws;
+    // keep them off the user's screen, the exception says the same.
+    std::ostringstream     muparser_chatter;
+    std::streambuf *const  cerr_buffer = std::cerr.rdbuf(muparser_chatter.rdbuf());
     try
       {
         f->initialize(variables, parts, constants, /*time_dependent=*/true);
         // muparser reports some errors only at evaluation.
         Vector<double> v(dim);
         f->vector_value(Point<dim>(), v);
+        std::cerr.rdbuf(cerr_buffer);
         for (unsigned int c = 0; c < dim; ++c)
           if (!std::isfinite(v[c]))
             throw InputError(key,
@@ -112,16 +120,10 @@ namespace Signorini
       }
     catch (const std::exception &e)
       {
-        std::string msg = e.what();
-        // Keep the part of deal.II's message that names the problem.
-        const auto pos = msg.find("Additional information:");
-        if (pos != std::string::npos)
-          msg = msg.substr(pos + 23);
-        while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
-          msg.pop_back();
+        std::cerr.rdbuf(cerr_buffer);
         throw InputError(key,
                          "cannot parse '" + expression + "' (variables " +
-                           variables + "):" + msg);
+                           variables + "): " + essential_message(e.what()));
       }
     return f;
   }

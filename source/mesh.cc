@@ -231,12 +231,17 @@ namespace Signorini
               for (const auto &face : cell->face_iterators())
                 if (face->at_boundary())
                   {
-                    const Point<dim> c = face->center();
-                    // A straight edge through the center, or the arc.
-                    if (std::abs(c[1] - center[1]) < tol)
+                    // A straight edge through the center has both its
+                    // vertices on the line; an arc face does not (its
+                    // midpoint may lie on x = cx, its vertices do not).
+                    auto on_line = [&](const unsigned int d) {
+                      return std::abs(face->vertex(0)[d] - center[d]) < tol &&
+                             std::abs(face->vertex(1)[d] - center[d]) < tol;
+                    };
+                    if (on_line(1))
                       face->set_boundary_id(
                         g.shape == BodyGeometry::Shape::quarter_disk ? 2 : 1);
-                    else if (std::abs(c[0] - center[0]) < tol)
+                    else if (on_line(0))
                       face->set_boundary_id(1);
                     else
                       {
@@ -333,7 +338,7 @@ namespace Signorini
           {
             throw InputError(mesh.gmsh_file,
                              std::string("cannot read the Gmsh mesh: ") +
-                               e.what());
+                               essential_message(e.what()));
           }
         if (serial.n_active_cells() == 0)
           throw InputError(mesh.gmsh_file, "the mesh has no cells");

@@ -20,6 +20,14 @@ namespace Signorini
   };
 
   /**
+   * The part of a deal.II exception text that says what went wrong (its
+   * "Additional information"), on one line, without the stack trace; the
+   * whole text if it has no such part.
+   */
+  std::string
+  essential_message(const std::string &what);
+
+  /**
    * A solve that did not succeed (Newton did not converge after every
    * allowed step cut, an inverted element could not be avoided, ...).
    * The run keeps the last converged state on disk, writes

@@ -1,0 +1,134 @@
+// Bad input must stop the program with a message that names the file, line
+// or entry and says what is wrong, a non-zero exit status, and no output
+// folder. Each case edits a valid base scene (which itself must run: the
+// first case) and runs the real executable on it.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace
+{
+  const std::string base = R"(set Dimension = 2
+subsection Body 1
+  subsection Geometry
+    set Subdivisions = 2, 2
+  end
+  subsection Material
+    @MATERIAL@
+  end
+end
+subsection Boundary conditions
+  set Fixed boundaries = 2: xy
+  @BC@
+end
+subsection Load stepping
+  @STEPS@
+end
+subsection Mesh
+  @MESH@
+end
+subsection Output
+  set Format = none
+end
+@EXTRA@
+)";
+
+  std::string
+  replace(std::string text, const std::string &key, const std::string &value)
+  {
+    const auto pos = text.find(key);
+    if (pos != std::string::npos)
+      text.replace(pos, key.size(), value);
+    return text;
+  }
+
+  std::string
+  scene(const std::map<std::string, std::string> &edits)
+  {
+    std::string text = base;
+    for (const auto &e : edits)
+      text = replace(text, e.first, e.second);
+    for (const char *key : {"@MATERIAL@", "@BC@", "@STEPS@", "@MESH@", "@EXTRA@"})
+      text = replace(text, key, "");
+    return text;
+  }
+
+  void
+  run_case(const std::string &name, const std::string &text, std::ostream &out,
+           const bool write_file = true)
+  {
+    const std::string file = name + ".prm";
+    const std::string folder = "cases/" + name;
+    if (write_file)
+      std::ofstream(file) << "set Output directory = " << folder << "\n" << text;
+    std::filesystem::remove_all(folder);
+    const std::string command =
+      std::string(SIGNORINI_EXECUTABLE) + " " + file + " 2>&1 >/dev/null";
+    FILE       *pipe = popen(command.c_str(), "r");
+    std::string message;
+    char        buffer[512];
+    while (fgets(buffer, sizeof(buffer), pipe))
+      message += buffer;
+    const int status = pclose(pipe);
+    const int code   = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    while (!message.empty() && message.back() == '\n')
+      message.pop_back();
+    out << name << ": exit " << code << ", output folder "
+        << (std::filesystem::exists(folder) ? "created" : "not created")
+        << "\n  " << (message.empty() ? "(no message)" : message) << "\n";
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+
+  // The base scene is valid.
+  run_case("valid_base", scene({}), out);
+
+  run_case("unknown_key", scene({{"@EXTRA@", "subsection Body 1\n  set Foo = 3\nend"}}), out);
+  run_case("malformed_value",
+           scene({{"@MATERIAL@", "set Young's modulus = abc"}}), out);
+  run_case("negative_modulus",
+           scene({{"@MATERIAL@", "set Young's modulus = -3"}}), out);
+  run_case("incompressible_nu",
+           scene({{"@MATERIAL@", "set Poisson's ratio = 0.5"}}), out);
+  run_case("nonpositive_shear",
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set C10 = 0\n    set C01 = 0"}}),
+           out);
+  run_case("zero_steps", scene({{"@STEPS@", "set Number of steps = 0"}}), out);
+  run_case("negative_end_time", scene({{"@STEPS@", "set End time = -1"}}), out);
+  run_case("bad_dimension", replace(scene({}), "set Dimension = 2", "set Dimension = 4"), out);
+  run_case("missing_boundary_id",
+           replace(scene({}), "set Fixed boundaries = 2: xy", "set Fixed boundaries = 7: x"), out);
+  run_case("bad_component",
+           replace(scene({}), "set Fixed boundaries = 2: xy", "set Fixed boundaries = 2: w"), out);
+  run_case("fixed_and_prescribed",
+           scene({{"@BC@", "set Prescribed boundaries = 2: y"}}), out);
+  run_case("no_dirichlet",
+           replace(scene({}), "set Fixed boundaries = 2: xy", ""), out);
+  run_case("traction_on_clamped_boundary",
+           scene({{"@BC@", "set Traction boundaries = 2\n  set Traction = 0; -1"}}), out);
+  run_case("bad_expression",
+           scene({{"@BC@", "set Traction boundaries = 3\n  set Traction = 0; -sin("}}), out);
+  run_case("unknown_variable",
+           scene({{"@BC@", "set Traction boundaries = 3\n  set Traction = 0; -q*t"}}), out);
+  run_case("missing_gmsh_file",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = does_not_exist.msh"}}), out);
+  std::ofstream("empty.msh").close();
+  run_case("empty_gmsh_file",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = empty.msh"}}), out);
+  std::ofstream("corrupt.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0\n";
+  run_case("corrupt_gmsh_file",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = corrupt.msh"}}), out);
+  run_case("duplicate_material_id",
+           scene({{"@EXTRA@", "subsection Body 2\n  set Active = true\n  set Material id = 0\nend"}}), out);
+  run_case("missing_parameter_file", "", out, false);
+}
