@@ -18,8 +18,10 @@ namespace Signorini
                       "direct: sparse LU (Trilinos Amesos). cg-amg: conjugate "
                       "gradients with algebraic multigrid (Trilinos ML), for "
                       "large problems with a positive definite Hessian. "
-                      "minres-amg: MINRES with the same preconditioner, "
-                      "tolerates an indefinite Hessian.");
+                      "minres-amg: MINRES (symmetric indefinite systems) with "
+                      "the same preconditioner, which itself assumes a "
+                      "definite matrix. AMG uses the displacement "
+                      "translations as near-null-space modes.");
     prm.declare_entry("Direct solver",
                       "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
@@ -107,13 +109,17 @@ namespace Signorini
         message = std::string("direct solver failed: ") + e.what();
         return false;
       }
+    // Every rank must take the same decision: the callers branch into
+    // collective operations on it.
+    bool finite = true;
     for (const auto i : x.locally_owned_elements())
-      if (!std::isfinite(x[i]))
-        {
-          message = "direct solver returned non-finite values (singular "
-                    "Hessian: is the body held against rigid motion?)";
-          return false;
-        }
+      finite = finite && std::isfinite(x[i]);
+    if (Utilities::MPI::min(finite ? 1 : 0, x.get_mpi_communicator()) == 0)
+      {
+        message = "direct solver returned non-finite values (singular "
+                  "Hessian: is the body held against rigid motion?)";
+        return false;
+      }
     return true;
   }
 

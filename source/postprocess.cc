@@ -158,8 +158,9 @@ namespace Signorini
                         "normal",
                         Patterns::Selection("quiet|normal|verbose"),
                         "quiet: errors only. normal: one line per load step "
-                        "and per Newton iteration. verbose: also the "
-                        "Hessian regularisation and the timing table.");
+                        "and per Newton iteration, with line-search and "
+                        "Hessian-regularisation notes. verbose: also the "
+                        "timing table at the end.");
     }
     prm.leave_subsection();
   }
@@ -253,7 +254,8 @@ namespace Signorini
           if (cell->is_locally_owned())
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == mean_displacement_boundary)
+                  cell->face(f)->boundary_id() ==
+                    static_cast<types::boundary_id>(mean_displacement_boundary))
                 {
                   fe_face.reinit(cell, f);
                   fe_face[component].get_function_values(u, values);

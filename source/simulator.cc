@@ -380,7 +380,9 @@ namespace Signorini
     AffineConstraints<double>       increment(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, increment);
     for (const auto &line : target.get_lines())
-      if (line.entries.empty())
+      // A hanging node whose parents are all Dirichlet DoFs also has an
+      // empty line after close(); its increment follows from its parents'.
+      if (line.entries.empty() && !increment.is_constrained(line.index))
         {
           increment.add_line(line.index);
           increment.set_inhomogeneity(line.index,

@@ -41,8 +41,9 @@ namespace Signorini
    *   shift' multiplied by 10 per retry, and as a last resort the scaled
    *   steepest descent direction is used;
    * - convergence when |minus gradient|_2 <= max(rtol * force scale,
-   *   atol) and, after the first iteration, the last energy decrease
-   *   |dE| <= etol * (|strain energy| + |external work|).
+   *   atol) and, after the first iteration, either the last energy
+   *   decrease |dE| <= etol * (|strain energy| + |external work|) or
+   *   |minus gradient|_2 <= atol.
    */
   class NewtonMinimizer
   {

@@ -110,8 +110,8 @@ namespace Signorini
       prm.declare_entry("Bulk modulus",
                         "-1",
                         Patterns::Double(),
-                        "ELAS_HYPER bulk modulus K [stress]; a negative "
-                        "value means: compute it from Poisson's ratio.");
+                        "ELAS_HYPER bulk modulus K [stress]; a value <= 0 "
+                        "means: compute it from Poisson's ratio.");
     }
 
     namespace

@@ -94,7 +94,7 @@ namespace Signorini
     /**
      * Create the material described by the current subsection of @p prm.
      * @p context names the subsection in error messages. Inconsistent
-     * constants throw an ExcMessage naming the entry.
+     * constants throw an InputError naming the entry.
      */
     std::unique_ptr<Interface>
     create(ParameterHandler &prm, const std::string &context);

@@ -9,8 +9,9 @@ namespace Signorini
     /**
      * Small-strain linear elasticity, psi = lambda/2 (tr eps)^2 + mu eps:eps
      * with eps = sym(F - I). P = lambda tr(eps) I + 2 mu eps and
-     * A_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk). It is
-     * defined for every F, so it never rejects a state.
+     * A_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk). The law is
+     * defined for every F; the energy functional still rejects states with
+     * J <= 0 (inverted elements) for every law.
      */
     class LinearElastic : public Interface
     {
