@@ -2,10 +2,10 @@
 #include <signorini/input_error.h>
 
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 
 #include <iostream>
 #include <sstream>
-#include <deal.II/lac/vector.h>
 
 namespace Signorini
 {

@@ -4,8 +4,8 @@
 
 namespace Signorini
 {
-std::string
-essential_message(const std::string &what)
+  std::string
+  essential_message(const std::string &what)
   {
     std::string msg = what;
     const auto  pos = msg.find("Additional information:");
