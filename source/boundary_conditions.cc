@@ -79,6 +79,49 @@ namespace Signorini
     return constants;
   }
 
+  template <int n>
+  std::unique_ptr<FunctionParser<n>>
+  parse_function(const std::vector<std::string>      &parts,
+                 const std::string                   &variables,
+                 const std::map<std::string, double> &constants,
+                 const bool                           time_dependent,
+                 const std::string                   &key)
+  {
+    std::string expression;
+    for (const auto &p : parts)
+      expression += (expression.empty() ? "" : "; ") + p;
+    auto f = std::make_unique<FunctionParser<n>>(parts.size());
+    // muparser writes its diagnostics to std::cerr before deal.II throws;
+    // keep them off the user's screen, the exception says the same.
+    std::ostringstream     muparser_chatter;
+    std::streambuf *const  cerr_buffer = std::cerr.rdbuf(muparser_chatter.rdbuf());
+    try
+      {
+        f->initialize(variables, parts, constants, time_dependent);
+        // muparser reports some errors only at evaluation.
+        Vector<double> v(parts.size());
+        f->vector_value(Point<n>(), v);
+        std::cerr.rdbuf(cerr_buffer);
+        for (unsigned int c = 0; c < parts.size(); ++c)
+          if (!std::isfinite(v[c]))
+            throw InputError(key,
+                             "'" + expression + "' is not finite at the origin" +
+                               (time_dependent ? ", t = 0" : ""));
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        throw InputError(key,
+                         "cannot parse '" + expression + "' (variables " +
+                           variables + "): " + essential_message(e.what()));
+      }
+    return f;
+  }
+
   template <int dim>
   std::unique_ptr<FunctionParser<dim>>
   parse_vector_function(const std::string                   &expression,
@@ -95,37 +138,8 @@ namespace Signorini
                        "needs " + std::to_string(dim) +
                          " components separated by ';', got '" + expression +
                          "'");
-    const std::string variables = (dim == 2 ? "x,y,t" : "x,y,z,t");
-    auto f = std::make_unique<FunctionParser<dim>>(dim);
-    // muparser writes its diagnostics to std::cerr before deal.II throws;
-    // keep them off the user's screen, the exception says the same.
-    std::ostringstream     muparser_chatter;
-    std::streambuf *const  cerr_buffer = std::cerr.rdbuf(muparser_chatter.rdbuf());
-    try
-      {
-        f->initialize(variables, parts, constants, /*time_dependent=*/true);
-        // muparser reports some errors only at evaluation.
-        Vector<double> v(dim);
-        f->vector_value(Point<dim>(), v);
-        std::cerr.rdbuf(cerr_buffer);
-        for (unsigned int c = 0; c < dim; ++c)
-          if (!std::isfinite(v[c]))
-            throw InputError(key,
-                             "'" + expression +
-                               "' is not finite at x = 0, t = 0");
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr.rdbuf(cerr_buffer);
-        throw InputError(key,
-                         "cannot parse '" + expression + "' (variables " +
-                           variables + "): " + essential_message(e.what()));
-      }
-    return f;
+    return parse_function<dim>(parts, dim == 2 ? "x,y,t" : "x,y,z,t",
+                               constants, true, key);
   }
 
   namespace
@@ -258,6 +272,14 @@ namespace Signorini
                                               ctx + "Body force");
   }
 
+  template std::unique_ptr<FunctionParser<1>>
+  parse_function<1>(const std::vector<std::string> &, const std::string &,
+                    const std::map<std::string, double> &, const bool,
+                    const std::string &);
+  template std::unique_ptr<FunctionParser<2>>
+  parse_function<2>(const std::vector<std::string> &, const std::string &,
+                    const std::map<std::string, double> &, const bool,
+                    const std::string &);
   template class BoundaryConditions<2>;
   template class BoundaryConditions<3>;
   template std::unique_ptr<FunctionParser<2>>

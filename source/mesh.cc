@@ -137,6 +137,22 @@ namespace Signorini
                       "0",
                       Patterns::Integer(0, 20),
                       "Number of uniform refinements of the coarse mesh.");
+    prm.declare_entry("Local refinements",
+                      "0",
+                      Patterns::Integer(0, 20),
+                      "Extra refinement levels, after the global ones, for "
+                      "the cells with a vertex inside the ball given by the "
+                      "two entries below (e.g. around the expected contact "
+                      "zone). The transition is graded with hanging nodes.");
+    prm.declare_entry("Local refinement center",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Center of the locally refined ball [length], dim "
+                      "coordinates.");
+    prm.declare_entry("Local refinement radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "Radius of the locally refined ball [length].");
   }
 
   void
@@ -154,6 +170,15 @@ namespace Signorini
           gmsh_file = prm_directory + "/" + gmsh_file;
       }
     global_refinements = prm.get_integer("Global refinements");
+    local_refinements  = prm.get_integer("Local refinements");
+    local_center.clear();
+    for (const auto &v :
+         Utilities::split_string_list(prm.get("Local refinement center")))
+      local_center.push_back(Utilities::string_to_double(v));
+    local_radius = prm.get_double("Local refinement radius");
+    if (local_refinements > 0 && !(local_radius > 0.))
+      throw InputError("Mesh > Local refinement radius",
+                       "must be > 0 when Local refinements > 0");
   }
 
   namespace
@@ -366,6 +391,28 @@ namespace Signorini
         tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
 
     tria.refine_global(mesh.global_refinements);
+
+    if (mesh.local_refinements > 0)
+      {
+        if (mesh.local_center.size() != dim)
+          throw InputError("Mesh > Local refinement center",
+                           "needs " + std::to_string(dim) + " coordinates");
+        Point<dim> center;
+        for (unsigned int d = 0; d < dim; ++d)
+          center[d] = mesh.local_center[d];
+        for (unsigned int r = 0; r < mesh.local_refinements; ++r)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const auto v : cell->vertex_indices())
+                  if (cell->vertex(v).distance(center) <= mesh.local_radius)
+                    {
+                      cell->set_refine_flag();
+                      break;
+                    }
+            tria.execute_coarsening_and_refinement();
+          }
+      }
   }
 
   template void

@@ -51,6 +51,12 @@ namespace Signorini
                       "8",
                       Patterns::Integer(0, 30),
                       "Shift retries before steepest descent is used.");
+    prm.declare_entry("Maximum increment",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "The line search starts from a step that moves no DoF "
+                      "by more than this fraction of the scene's size "
+                      "(bounding-box diameter); 0: no limit.");
   }
 
   void
@@ -65,6 +71,7 @@ namespace Signorini
     max_backtracks     = prm.get_integer("Maximum backtracks");
     initial_shift      = prm.get_double("Initial shift");
     max_shifts         = prm.get_integer("Maximum shifts");
+    max_increment      = prm.get_double("Maximum increment");
   }
 
   NewtonMinimizer::NewtonMinimizer(const Parameters   &parameters,
@@ -233,7 +240,17 @@ namespace Signorini
         const double slope = -(rhs * d); // g.d < 0
         const double       noise =
           1e3 * std::numeric_limits<double>::epsilon() * (energy_scale + std::abs(e.value));
-        double alpha    = 1.;
+        double alpha = 1.;
+        if (parameters.max_increment > 0. && length_scale > 0.)
+          {
+            const double largest = d.linfty_norm();
+            if (largest > parameters.max_increment * length_scale)
+              {
+                alpha = parameters.max_increment * length_scale / largest;
+                progress << "      step limited to " << alpha
+                         << " of the Newton step" << std::endl;
+              }
+          }
         bool   accepted = false;
         Evaluation trial_e;
         for (unsigned int k = 0; k <= parameters.max_backtracks; ++k)

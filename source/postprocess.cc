@@ -355,6 +355,8 @@ namespace Signorini
         }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
+    if (extra_fields)
+      extra_fields(data_out);
     const unsigned int degree = dof_handler.get_fe().degree;
     data_out.build_patches(mapping, degree, DataOut<dim>::curved_inner_cells);
 

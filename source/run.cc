@@ -105,7 +105,9 @@ namespace Signorini
           {
             std::cout << "\nResult (" << report.status << ", "
                       << report.steps.size() << " load steps, "
-                      << report.newton_iterations << " Newton iterations):\n";
+                      << report.newton_iterations
+                      << (report.solver == "ipopt" ? " Ipopt" : " Newton")
+                      << " iterations):\n";
             for (const auto &q : report.quantities)
               {
                 std::cout << "  " << q.name << " = " << std::setprecision(8)

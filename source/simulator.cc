@@ -109,14 +109,46 @@ namespace Signorini
     prm.enter_subsection("Solver");
     prm.declare_entry("Method",
                       "newton",
-                      Patterns::Selection("newton"),
+                      Patterns::Selection("newton|newton-penalty|ipopt"),
                       "newton: Newton's method on the total potential "
-                      "energy with an Armijo line search.");
+                      "energy with an Armijo line search (no contact). "
+                      "newton-penalty: the same on E + mu/3 sum w_k "
+                      "<-g_k>^3 with penalty continuation (contact; runs "
+                      "with MPI). ipopt: the interior point optimiser with "
+                      "the contact and incompressibility constraints and "
+                      "exact derivatives (one MPI rank).");
     prm.enter_subsection("Newton");
     NewtonMinimizer::Parameters::declare_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Penalty");
+    Contact::ContinuationParameters::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Ipopt");
+    IpoptSolver<2>::Parameters::declare_parameters(prm);
+    prm.leave_subsection();
     prm.enter_subsection("Linear solver");
     LinearSolver::Parameters::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Type",
+                      "none",
+                      Patterns::Selection("none|rigid foundation"),
+                      "none: no contact (no contact structures are built). "
+                      "rigid foundation: the boundary 'Contact boundary id' "
+                      "must stay above the surface of the Foundation "
+                      "subsection (node-wise constraints).");
+    prm.declare_entry("Contact boundary id",
+                      "0",
+                      Patterns::Integer(0, 255),
+                      "Gamma_2: the boundary id of the potential contact "
+                      "boundary.");
+    prm.enter_subsection("Foundation");
+    Contact::Foundation<2>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Hertz reference");
+    Contact::HertzReference::declare_parameters(prm);
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -201,6 +233,8 @@ namespace Signorini
             geometries.back().parse_parameters(prm, dim, section + " > Geometry");
             prm.leave_subsection();
             prm.enter_subsection("Material");
+            if (prm.get_bool("Incompressible"))
+              incompressible_ids.insert(id);
             material_objects.push_back(
               Material::create(prm, section + " > Material"));
             materials[id] = material_objects.back().get();
@@ -231,8 +265,15 @@ namespace Signorini
 
     prm.enter_subsection("Solver");
     report.solver = prm.get("Method");
+    method        = report.solver;
     prm.enter_subsection("Newton");
     newton_parameters.parse_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Penalty");
+    continuation_parameters.parse_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Ipopt");
+    ipopt_parameters.parse_parameters(prm, file.parent_path().string());
     prm.leave_subsection();
     prm.enter_subsection("Linear solver");
     linear_parameters.parse_parameters(prm);
@@ -278,10 +319,64 @@ namespace Signorini
     for (const auto &part : bc.dirichlet_parts())
       has_prescribed_motion |= part.prescribed;
 
+    // Contact and the solver that can handle what the scene declares.
+    prm.enter_subsection("Contact");
+    report.contact_type = prm.get("Type");
+    std::unique_ptr<Contact::Foundation<dim>> foundation;
+    types::boundary_id                        contact_id = 0;
+    if (report.contact_type == "rigid foundation")
+      {
+        contact_id = prm.get_integer("Contact boundary id");
+        if (boundary_ids.count(contact_id) == 0)
+          throw InputError("Contact > Contact boundary id",
+                           "boundary id " + prm.get("Contact boundary id") +
+                             " does not exist in the mesh");
+        prm.enter_subsection("Foundation");
+        foundation = Contact::Foundation<dim>::create(prm, "Contact > Foundation");
+        report.foundation = foundation->description();
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Hertz reference");
+    hertz.parse_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    if (hertz.active() && !foundation)
+      throw InputError("Contact > Hertz reference > Line load",
+                       "a Hertz reference needs Contact > Type = rigid foundation");
+    if (hertz.active() && hertz.contact_modulus <= 0.)
+      {
+        const auto   lame = material_objects.front()->small_strain_lame();
+        const double E    = lame.first * (3. * lame.second + 2. * lame.first) /
+                         (lame.second + lame.first);
+        const double nu = lame.second / (2. * (lame.second + lame.first));
+        hertz.contact_modulus = E / (1. - nu * nu);
+      }
+    if (method == "newton" && foundation)
+      throw InputError("Solver > Method",
+                       "the scene declares contact (Contact > Type = rigid "
+                       "foundation), which Method = newton cannot handle: use "
+                       "newton-penalty or ipopt");
+    if (method == "newton-penalty" && !foundation)
+      throw InputError("Solver > Method",
+                       "newton-penalty needs contact (Contact > Type); the "
+                       "scene declares none: use newton");
+    if (!incompressible_ids.empty() && method != "ipopt")
+      throw InputError("Body 1 > Material > Incompressible",
+                       "J = 1 constraints need Solver > Method = ipopt, not " +
+                         method);
+    if (method == "ipopt" && report.n_ranks > 1)
+      throw InputError("Solver > Method",
+                       "ipopt runs on one MPI rank, and this run has " +
+                         std::to_string(report.n_ranks) +
+                         ": run it without mpirun, or use newton-penalty");
+
     fe      = std::make_unique<FESystem<dim>>(FE_Q<dim>(report.degree), dim);
     mapping = std::make_unique<MappingQ<dim>>(report.degree);
     energy  = std::make_unique<EnergyFunctional<dim>>(dof_handler, *mapping,
                                                      materials, bc);
+    if (foundation)
+      contact = std::make_unique<Contact::RigidFoundation<dim>>(
+        std::move(foundation), contact_id, dof_handler, *mapping);
     postprocessor = std::make_unique<Postprocessor<dim>>(prm,
                                                          dof_handler,
                                                          *mapping,
@@ -296,9 +391,32 @@ namespace Signorini
     pcout.set_condition(talk);
     progress.set_condition(talk);
     linear_solver = std::make_unique<LinearSolver>(linear_parameters);
-    setup_dofs();
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
+    setup_dofs();
+    if (contact)
+      {
+        report.contact_nodes = contact->n_global_nodes();
+        if (report.contact_nodes == 0)
+          throw InputError("Contact > Contact boundary id",
+                           "boundary " + std::to_string(contact->boundary_id()) +
+                             " has no contact node (every node on it is a "
+                             "hanging node)");
+        double E_max = 0.;
+        for (const auto &m : material_objects)
+          {
+            const auto l = m->small_strain_lame();
+            E_max = std::max(E_max, l.first * (3. * l.second + 2. * l.first) /
+                                      (l.second + l.first));
+          }
+        mu0 = continuation_parameters.initial_factor * E_max /
+              std::pow(contact->min_mesh_size(), 2);
+        report.initial_penalty = mu0;
+        last_mu                = mu0;
+        postprocessor->extra_fields = [this](DataOut<dim> &data_out) {
+          contact->add_output_fields(data_out, solution_ghosted, contact_forces);
+        };
+      }
     setup_seconds = Utilities::MPI::max(setup_timer.wall_time(), comm);
   }
 
@@ -331,6 +449,30 @@ namespace Signorini
     solution_ghosted.reinit(locally_owned, locally_relevant, comm);
     rhs.reinit(locally_owned, comm);
 
+    if (contact)
+      {
+        contact->setup(hanging_constraints);
+        contact_forces.assign(contact->nodes().size(), 0.);
+      }
+    if (!incompressible_ids.empty())
+      {
+        incompressibility = std::make_unique<Incompressibility<dim>>(
+          dof_handler, *mapping, incompressible_ids);
+        report.incompressibility_constraints = incompressibility->cells().size();
+      }
+    if (method == "ipopt")
+      {
+        ipopt = std::make_unique<IpoptSolver<dim>>(ipopt_parameters,
+                                                   dof_handler,
+                                                   *energy,
+                                                   contact.get(),
+                                                   incompressibility.get(),
+                                                   output_directory,
+                                                   progress,
+                                                   *timer);
+        ipopt->setup(homogeneous_constraints, hessian);
+      }
+
     std::vector<std::vector<bool>> modes;
     DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), modes);
     linear_solver->set_constant_modes(modes, report.degree > 1);
@@ -345,6 +487,11 @@ namespace Signorini
           h_max = std::max(h_max, cell->diameter());
         }
     report.h_min = Utilities::MPI::min(h_min, comm);
+    {
+      const auto box = GridTools::compute_bounding_box(triangulation);
+      scene_size     = box.get_boundary_points().first.distance(
+        box.get_boundary_points().second);
+    }
     report.h_max = Utilities::MPI::max(h_max, comm);
   }
 
@@ -396,25 +543,133 @@ namespace Signorini
   template <int dim>
   bool
   Simulator<dim>::solve_load_step(const double                 time,
-                                  NewtonMinimizer::Statistics &stats)
+                                  NewtonMinimizer::Statistics &stats,
+                                  Report::Step                &record)
   {
-    EnergyObjective<dim> objective(*energy, time);
+    if (method == "ipopt")
+      {
+        solution_ghosted = solution;
+        const AffineConstraints<double> target = boundary_constraints(time, false);
+        const auto result = ipopt->solve(time, target, solution_ghosted);
+        solution                = solution_ghosted;
+        stats.iterations        = result.iterations;
+        stats.converged         = result.success;
+        record.solver_status    = result.status;
+        report.derivative_test_errors =
+          std::max(report.derivative_test_errors, result.derivative_test_errors);
+        if (!result.success)
+          {
+            stats.reason = "Ipopt returned " + result.status + " after " +
+                           std::to_string(result.iterations) + " iterations";
+            return false;
+          }
+        if (contact)
+          contact_forces = result.contact_forces;
+        TimerOutput::Scope scope(*timer, "assembly");
+        stats.evaluation =
+          energy->evaluate(solution_ghosted, time, homogeneous_constraints, &rhs, nullptr);
+        stats.residual = 0.;
+        return true;
+      }
+
     NewtonMinimizer newton(newton_parameters, *linear_solver, progress, *timer);
+    newton.set_length_scale(scene_size);
+    const double    mu_start =
+      continuation_parameters.restart_each_step ?
+        mu0 :
+        std::max(mu0, last_mu / continuation_parameters.max_growth);
+    std::unique_ptr<Objective> objective;
+    if (method == "newton-penalty")
+      objective = std::make_unique<Contact::PenaltyObjective<dim>>(*energy, *contact,
+                                                                   time, mu_start);
+    else
+      objective = std::make_unique<EnergyObjective<dim>>(*energy, time);
     if (has_prescribed_motion)
       {
         solution_ghosted = solution;
         const AffineConstraints<double> increment = increment_constraints(time);
         std::string                     reason;
-        if (!newton.predictor(objective, increment, solution, solution_ghosted,
+        if (!newton.predictor(*objective, increment, solution, solution_ghosted,
                               hessian, rhs, reason))
           {
             stats.reason = "predictor: " + reason;
             return false;
           }
       }
-    stats = newton.minimize(objective, homogeneous_constraints, solution,
-                            solution_ghosted, hessian, rhs);
-    return stats.converged;
+    if (method == "newton")
+      {
+        stats = newton.minimize(*objective, homogeneous_constraints, solution,
+                                solution_ghosted, hessian, rhs);
+        return stats.converged;
+      }
+
+    const Contact::ContinuationResult result =
+      Contact::penalty_continuation(continuation_parameters, newton, *energy,
+                                    *contact, time, mu_start,
+                                    homogeneous_constraints, solution,
+                                    solution_ghosted, hessian, rhs, progress);
+    stats            = result.last;
+    stats.iterations = result.newton_iterations;
+    stats.converged  = result.converged;
+    stats.reason     = result.reason;
+    record.stages    = result.stages;
+    if (!result.converged)
+      return false;
+    contact_forces = result.forces;
+    last_mu        = result.stages.back().mu;
+    if (!result.tolerance_met)
+      {
+        report.penetration_tolerance_met = false;
+        record.solver_status = "penetration tolerance not met";
+      }
+    return true;
+  }
+
+  template <int dim>
+  std::vector<Quantity>
+  Simulator<dim>::contact_quantities(const unsigned int, Report::Step &record)
+  {
+    std::vector<Quantity> quantities;
+    const auto summary = contact->summarize(solution_ghosted, contact_forces);
+    record.active_nodes      = summary.n_active;
+    record.penetration_ratio = summary.max_penetration_ratio;
+    record.contact_force     = summary.total_force[dim - 1];
+    const char *axes = "xyz";
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Quantity q;
+        q.name  = std::string("contact_force_") + axes[d];
+        q.value = summary.total_force[d];
+        if (d == dim - 1 && hertz.active())
+          {
+            q.has_reference = true;
+            q.reference     = hertz.modelled_fraction * hertz.line_load;
+            q.tolerance     = hertz.tolerance_force;
+          }
+        quantities.push_back(q);
+      }
+    Quantity active;
+    active.name  = "active_contact_nodes";
+    active.value = summary.n_active;
+    quantities.push_back(active);
+    Quantity penetration;
+    penetration.name  = "max_penetration_over_h";
+    penetration.value = summary.max_penetration_ratio;
+    quantities.push_back(penetration);
+    if (hertz.active())
+      {
+        std::vector<std::pair<double, double>> samples;
+        for (const auto &p : contact->gather_pressure(solution_ghosted, contact_forces))
+          samples.emplace_back(p.first[0], p.second);
+        for (const auto &q : hertz.quantities(samples))
+          quantities.push_back(q);
+      }
+    std::function<double(const Point<dim> &)> reference;
+    if (hertz.active())
+      reference = [this](const Point<dim> &x) { return hertz.pressure(x[0]); };
+    contact->write_profile(output_directory + "/contact_profile.csv",
+                           solution_ghosted, contact_forces, reference);
+    return quantities;
   }
 
   template <int dim>
@@ -471,9 +726,12 @@ namespace Signorini
                   << " (dt = " << t_new - t << ")" << std::endl;
             backup = solution;
             NewtonMinimizer::Statistics stats;
-            if (!solve_load_step(t_new, stats))
+            Report::Step                record{};
+            const std::vector<double>   backup_forces = contact_forces;
+            if (!solve_load_step(t_new, stats, record))
               {
-                solution = backup;
+                solution       = backup;
+                contact_forces = backup_forces;
                 ++cuts;
                 ++report.step_cuts;
                 dt /= 2.;
@@ -495,15 +753,15 @@ namespace Signorini
             t = t_new;
             ++step;
             report.newton_iterations += stats.iterations;
-            report.steps.push_back({t,
-                                    stats.iterations,
-                                    stats.backtracks,
-                                    stats.regularized_steps,
-                                    stats.linear_iterations,
-                                    cuts,
-                                    stats.residual,
-                                    stats.evaluation.value,
-                                    stats.evaluation.min_J});
+            record.time              = t;
+            record.newton_iterations = stats.iterations;
+            record.backtracks        = stats.backtracks;
+            record.regularized       = stats.regularized_steps;
+            record.linear_iterations = stats.linear_iterations;
+            record.cuts_before       = cuts;
+            record.residual          = stats.residual;
+            record.energy            = stats.evaluation.value;
+            record.min_J             = stats.evaluation.min_J;
             cuts = 0;
             report.final_time = t;
 
@@ -512,14 +770,19 @@ namespace Signorini
               TimerOutput::Scope scope(*timer, "postprocessing");
               report.quantities =
                 postprocessor->compute_quantities(solution_ghosted, t);
+              if (contact)
+                for (const auto &q : contact_quantities(step, record))
+                  report.quantities.push_back(q);
             }
+            report.steps.push_back(record);
             {
               TimerOutput::Scope scope(*timer, "output");
               postprocessor->write_output(solution_ghosted, t, step,
                                           t >= end_time);
             }
             // Grow back towards the requested step after easy steps.
-            if (stats.iterations <= 5 && dt < full_step)
+            if (stats.iterations <= 5 * std::max<std::size_t>(1, record.stages.size()) &&
+                dt < full_step)
               dt = std::min(2. * dt, full_step);
           }
         report.status = "converged";
@@ -576,7 +839,34 @@ namespace Signorini
     j["final time"]              = report.final_time;
     j["load steps"]              = static_cast<unsigned int>(report.steps.size());
     j["step cuts"]               = report.step_cuts;
-    j["newton iterations"]       = report.newton_iterations;
+    j[method == "ipopt" ? "ipopt iterations" : "newton iterations"] =
+      report.newton_iterations;
+    if (contact)
+      {
+        Json &c                 = j["contact"];
+        c["type"]               = report.contact_type;
+        c["boundary id"]        = static_cast<unsigned int>(contact->boundary_id());
+        c["foundation"]         = report.foundation;
+        c["nodes"]              = report.contact_nodes;
+        c["mean mesh size"]     = contact->mean_mesh_size();
+        c["min mesh size"]      = contact->min_mesh_size();
+        if (method == "newton-penalty")
+          {
+            c["initial penalty"]           = report.initial_penalty;
+            c["final penalty"]             = last_mu;
+            c["penetration tolerance"]     = continuation_parameters.penetration_tolerance;
+            c["penetration tolerance met"] = report.penetration_tolerance_met;
+          }
+        if (!report.steps.empty())
+          {
+            c["active nodes"]           = report.steps.back().active_nodes;
+            c["max penetration over h"] = report.steps.back().penetration_ratio;
+          }
+      }
+    if (incompressibility)
+      j["incompressibility constraints"] = report.incompressibility_constraints;
+    if (method == "ipopt" && report.derivative_test_errors >= 0)
+      j["ipopt derivative test errors"] = report.derivative_test_errors;
     Json steps = Json::array();
     for (const auto &s : report.steps)
       {
@@ -590,6 +880,27 @@ namespace Signorini
         o["residual"]          = s.residual;
         o["energy"]            = s.energy;
         o["min J"]             = s.min_J;
+        if (!s.solver_status.empty())
+          o["solver status"] = s.solver_status;
+        if (!s.stages.empty())
+          {
+            Json stages = Json::array();
+            for (const auto &st : s.stages)
+              {
+                Json so                 = Json::object();
+                so["mu"]                = st.mu;
+                so["newton iterations"] = st.newton_iterations;
+                so["max penetration over h"] = st.penetration_ratio;
+                stages.push_back(so);
+              }
+            o["penalty stages"] = stages;
+          }
+        if (contact)
+          {
+            o["active contact nodes"]   = s.active_nodes;
+            o["max penetration over h"] = s.penetration_ratio;
+            o["contact force"]          = s.contact_force;
+          }
         steps.push_back(o);
       }
     j["steps"] = steps;
@@ -621,8 +932,11 @@ namespace Signorini
     out << "\n";
 
     std::ofstream csv(output_directory + "/load_steps.csv");
-    csv << "step,time,newton_iterations,backtracks,regularized_steps,"
-           "linear_iterations,cuts_before,residual,energy,min_J\n"
+    csv << "step,time," << (method == "ipopt" ? "ipopt" : "newton")
+        << "_iterations,backtracks,regularized_steps,"
+           "linear_iterations,cuts_before,residual,energy,min_J,"
+           "penalty_stages,final_penalty,active_contact_nodes,"
+           "max_penetration_over_h,contact_force\n"
         << std::setprecision(12);
     for (unsigned int i = 0; i < report.steps.size(); ++i)
       {
@@ -630,7 +944,11 @@ namespace Signorini
         csv << i + 1 << "," << s.time << "," << s.newton_iterations << ","
             << s.backtracks << "," << s.regularized << ","
             << s.linear_iterations << "," << s.cuts_before << ","
-            << s.residual << "," << s.energy << "," << s.min_J << "\n";
+            << s.residual << "," << s.energy << "," << s.min_J << ","
+            << s.stages.size() << ","
+            << (s.stages.empty() ? 0. : s.stages.back().mu) << ","
+            << s.active_nodes << "," << s.penetration_ratio << ","
+            << s.contact_force << "\n";
       }
   }
 

@@ -102,6 +102,21 @@ namespace Signorini
                         const std::map<std::string, double> &constants,
                         const std::string                   &key);
 
+  /**
+   * Parse a function of n variables with one component per entry of
+   * @p parts (muparser syntax), variables named in @p variables (comma
+   * separated, with ",t" last if @p time_dependent), and the given
+   * constants. Throws InputError naming @p key if it does not parse or is
+   * not finite at the origin.
+   */
+  template <int n>
+  std::unique_ptr<FunctionParser<n>>
+  parse_function(const std::vector<std::string>      &parts,
+                 const std::string                   &variables,
+                 const std::map<std::string, double> &constants,
+                 const bool                           time_dependent,
+                 const std::string                   &key);
+
   /// Parse "name=value, name=value" into constants; InputError on failure.
   std::map<std::string, double>
   parse_constants(const std::string &text, const std::string &key);

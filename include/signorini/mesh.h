@@ -60,6 +60,9 @@ namespace Signorini
     Source       source = Source::generated;
     std::string  gmsh_file;
     unsigned int global_refinements = 0;
+    unsigned int        local_refinements = 0;
+    std::vector<double> local_center;
+    double              local_radius = 0.;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -74,7 +77,11 @@ namespace Signorini
    * so bodies that touch are not glued together), or a Gmsh file whose
    * physical tags give material and boundary ids. Curved boundaries get
    * a SphericalManifold and the cells next to them a transfinite
-   * interpolation, so refinement follows the geometry.
+   * interpolation, so refinement follows the geometry. After the
+   * global refinements, 'Local refinements' more levels are added to the
+   * cells that have a vertex within 'Local refinement radius' of
+   * 'Local refinement center' (a contact zone, say); p4est keeps
+   * neighbouring levels within one of each other (hanging nodes).
    */
   template <int dim>
   void

@@ -43,7 +43,10 @@ namespace Signorini
    * - convergence when |minus gradient|_2 <= max(rtol * force scale,
    *   atol) and, after the first iteration, either the last energy
    *   decrease |dE| <= etol * (|strain energy| + |external work|) or
-   *   |minus gradient|_2 <= atol.
+   *   |minus gradient|_2 <= atol;
+   * - a first trial step no longer than 'Maximum increment' times the
+   *   scene size in any DoF (a body held only by contact has a singular
+   *   Hessian until it touches: its Newton step is huge).
    */
   class NewtonMinimizer
   {
@@ -59,6 +62,7 @@ namespace Signorini
       unsigned int max_backtracks     = 30;
       double       initial_shift      = 1e-6;
       unsigned int max_shifts         = 8;
+      double       max_increment      = 0.1;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -106,6 +110,16 @@ namespace Signorini
      * the Dirichlet values to their new targets), accepted in full if the
      * new state is admissible. Returns false (u unchanged) otherwise.
      */
+    /**
+     * The scene's size (diameter of its bounding box): no trial step
+     * moves a DoF by more than 'Maximum increment' times this.
+     */
+    void
+    set_length_scale(const double length)
+    {
+      length_scale = length;
+    }
+
     bool
     predictor(Objective                       &objective,
               const AffineConstraints<double> &constraints,
@@ -124,6 +138,7 @@ namespace Signorini
                       Statistics                      &statistics);
 
     Parameters          parameters;
+    double              length_scale = 0.;
     const LinearSolver &linear_solver;
     ConditionalOStream &progress;
     TimerOutput        &timer;

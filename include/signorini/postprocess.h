@@ -10,6 +10,9 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <deal.II/numerics/data_out.h>
+
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -77,6 +80,9 @@ namespace Signorini
                  const double       time,
                  const unsigned int step,
                  const bool         last_step);
+
+    /// Called before the patches are built, to add further fields.
+    std::function<void(DataOut<dim> &)> extra_fields;
 
     std::string
     verbosity() const

@@ -1,6 +1,11 @@
 #pragma once
 
 #include <signorini/boundary_conditions.h>
+#include <signorini/contact/hertz.h>
+#include <signorini/contact/penalty.h>
+#include <signorini/contact/rigid_foundation.h>
+#include <signorini/incompressibility.h>
+#include <signorini/ipopt_solver.h>
 #include <signorini/energy_functional.h>
 #include <signorini/json.h>
 #include <signorini/linear_solver.h>
@@ -48,6 +53,13 @@ namespace Signorini
       double       residual;
       double       energy;
       double       min_J;
+      // Solver-specific: penalty stages, or Ipopt's status.
+      std::vector<Contact::Stage> stages;
+      std::string                 solver_status;
+      // Contact state at the end of the step.
+      unsigned int active_nodes       = 0;
+      double       penetration_ratio  = 0.;
+      double       contact_force      = 0.; // along x_d
     };
 
     std::string              scene;
@@ -69,6 +81,14 @@ namespace Signorini
     unsigned int             step_cuts         = 0;
     unsigned int             newton_iterations = 0;
     std::vector<Step>        steps;
+    // Contact.
+    std::string  contact_type = "none";
+    std::string  foundation;
+    unsigned int contact_nodes             = 0;
+    double       initial_penalty           = 0.;
+    bool         penetration_tolerance_met = true;
+    int          derivative_test_errors    = -1;
+    unsigned int incompressibility_constraints = 0;
     std::vector<Quantity>    quantities;
     std::map<std::string, double> timing;
   };
@@ -114,7 +134,11 @@ namespace Signorini
     AffineConstraints<double>
     increment_constraints(const double time) const;
     bool
-    solve_load_step(const double time, NewtonMinimizer::Statistics &stats);
+    solve_load_step(const double                 time,
+                    NewtonMinimizer::Statistics &stats,
+                    Report::Step                &record);
+    std::vector<Quantity>
+    contact_quantities(const unsigned int step, Report::Step &record);
     void
     write_summary() const;
 
@@ -137,6 +161,11 @@ namespace Signorini
     NewtonMinimizer::Parameters newton_parameters;
     LinearSolver::Parameters    linear_parameters;
     bool                        has_prescribed_motion = false;
+    std::string                 method = "newton";
+    Contact::ContinuationParameters          continuation_parameters;
+    typename IpoptSolver<dim>::Parameters    ipopt_parameters;
+    Contact::HertzReference                  hertz;
+    std::set<types::material_id>             incompressible_ids;
 
     // Discretisation.
     parallel::distributed::Triangulation<dim> triangulation;
@@ -154,6 +183,13 @@ namespace Signorini
     std::map<types::material_id, const Material::Interface *> materials;
     std::unique_ptr<EnergyFunctional<dim>>                    energy;
     std::unique_ptr<Postprocessor<dim>>                       postprocessor;
+    std::unique_ptr<Contact::RigidFoundation<dim>>            contact;
+    std::unique_ptr<Incompressibility<dim>>                   incompressibility;
+    std::unique_ptr<IpoptSolver<dim>>                         ipopt;
+    std::vector<double> contact_forces; // nodal, of the last solve
+    double              mu0     = 0.;  // first penalty factor
+    double              last_mu = 0.;  // final penalty of the last step
+    double              scene_size = 0.; // bounding-box diameter
 
     // Linear algebra.
     std::unique_ptr<LinearSolver> linear_solver;

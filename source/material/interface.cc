@@ -112,6 +112,14 @@ namespace Signorini
                         Patterns::Double(),
                         "ELAS_HYPER bulk modulus K [stress]; a value <= 0 "
                         "means: compute it from Poisson's ratio.");
+      prm.declare_entry("Incompressible",
+                        "false",
+                        Patterns::Bool(),
+                        "ELAS_HYPER only, with Solver > Method = ipopt: drop "
+                        "the volumetric term K/2 (J - 1)^2 and impose J = 1 "
+                        "as one equality int_K (J - 1) dV = 0 per cell (use "
+                        "Polynomial degree = 2: the Q2/P0 pair). Poisson's "
+                        "ratio and Bulk modulus are then unused.");
     }
 
     namespace
@@ -163,7 +171,9 @@ namespace Signorini
             throw InputError(context + " > C20",
                              "must be >= 0, got " + prm.get("C20"));
           const double K = prm.get_double("Bulk modulus");
-          if (K > 0.)
+          if (prm.get_bool("Incompressible"))
+            law.include_volumetric = false;
+          else if (K > 0.)
             law.K = K;
           else
             {
@@ -173,6 +183,10 @@ namespace Signorini
           return std::make_unique<InvariantLaw<ElasHyperLaw>>(law);
         }
 
+      if (prm.get_bool("Incompressible"))
+        throw InputError(context + " > Incompressible",
+                         "is only available for Model = ELAS_HYPER, not " +
+                           model);
       const double E      = get_positive(prm, context, "Young's modulus");
       const double nu     = get_poisson(prm, context);
       const double mu     = E / (2. * (1. + nu));

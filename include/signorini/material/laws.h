@@ -77,7 +77,9 @@ namespace Signorini
       std::string
       name() const
       {
-        return "ELAS_HYPER (Mooney-Rivlin family)";
+        return include_volumetric ? "ELAS_HYPER (Mooney-Rivlin family)" :
+                                    "ELAS_HYPER (Mooney-Rivlin family), "
+                                    "incompressible (J = 1 constraints)";
       }
 
       std::pair<double, double>

@@ -1,0 +1,208 @@
+#pragma once
+
+#include <signorini/contact/foundation.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    /**
+     * Frictionless contact of the bodies' boundary Gamma_2 (a boundary id)
+     * with a rigid foundation x_d >= psi(x'): one constraint per degree-of-
+     * freedom support point k on Gamma_2 (formulation.md section 2),
+     *
+     *   g_k(U) = X_d,k + U_d,k - psi(X'_k + U'_k) >= 0,
+     *
+     * with gradient e_d - grad psi and Hessian -hess psi in the node's
+     * dim x dim block. Nodes whose vertical DoF is a hanging node are left
+     * out (they follow their parents). Each MPI rank holds the nodes whose
+     * DoFs it owns.
+     *
+     * Each node carries its tributary weight w_k = int_Gamma2 phi_k ds
+     * (reference configuration; the lumped length or area of the node) and
+     * a local mesh size h_k (mean diameter of the Gamma_2 faces at the
+     * node). Contact pressure is the node's force over w_k; penetration is
+     * reported relative to h_k.
+     *
+     * The class serves both solvers: the penalty term
+     * mu/3 sum_k w_k <-g_k>^3 for Newton, and the constraint values and
+     * derivatives for Ipopt. Given the nodal contact forces lambda_k >= 0
+     * (along grad g_k) it computes the contact output: pressure, gap,
+     * active set, total force, the CSV profile and the Hertz quantities.
+     */
+    template <int dim>
+    class RigidFoundation
+    {
+    public:
+      struct Node
+      {
+        std::array<types::global_dof_index, dim> dofs;
+        Point<dim>              X;      // reference position
+        double                  weight; // int phi_k ds
+        double                  h;      // local mesh size
+        types::global_dof_index scalar_dof; // in the output DoFHandler
+      };
+
+      struct State
+      {
+        Point<dim>     x;    // current position
+        double         g;    // x_d - psi(x')
+        Tensor<1, dim> grad; // dg/dU
+        Tensor<2, dim> hess; // d2g/dU2
+        /// Geometric penetration depth (>= 0), first order: <-g>/|grad g|.
+        double
+        penetration() const
+        {
+          return std::max(-g, 0.) / grad.norm();
+        }
+      };
+
+      /// Summary of a contact state for summary.json and the screen.
+      struct Summary
+      {
+        unsigned int   n_nodes  = 0;
+        unsigned int   n_active = 0;
+        Tensor<1, dim> total_force; // force of the foundation on the body
+        double         max_penetration       = 0.;
+        double         max_penetration_ratio = 0.; // over h_k
+        double         max_pressure          = 0.;
+      };
+
+      RigidFoundation(std::unique_ptr<Foundation<dim>> foundation,
+                      const types::boundary_id          boundary_id,
+                      const DoFHandler<dim>            &dof_handler,
+                      const Mapping<dim>               &mapping);
+
+      /// Collect the contact nodes (call after the DoFs are distributed).
+      void
+      setup(const AffineConstraints<double> &hanging_constraints);
+
+      /// The nodes owned by this rank.
+      const std::vector<Node> &
+      nodes() const
+      {
+        return contact_nodes;
+      }
+
+      unsigned int
+      n_global_nodes() const
+      {
+        return n_global;
+      }
+
+      /// Mean h_k over all nodes, the scale of penalty parameters.
+      double
+      mean_mesh_size() const
+      {
+        return mean_h;
+      }
+
+      /// Smallest h_k: the finest contact resolution.
+      double
+      min_mesh_size() const
+      {
+        return min_h;
+      }
+
+      const Foundation<dim> &
+      foundation() const
+      {
+        return *surface;
+      }
+
+      types::boundary_id
+      boundary_id() const
+      {
+        return contact_boundary;
+      }
+
+      /// Position, gap and derivatives of node @p node at the ghosted @p u.
+      State
+      evaluate(const Node &node, const VectorType &u) const;
+
+      /**
+       * Add the penalty term mu/3 sum_k w_k <-g_k>^3 and, if given, minus
+       * its gradient to @p rhs and its Hessian to @p hessian (condensed
+       * with @p constraints, then compressed: collective). Returns the
+       * term's value summed over all ranks. If @p forces is given it
+       * receives the nodal forces mu w_k <-g_k>^2.
+       */
+      double
+      add_penalty(const VectorType                &u,
+                  const double                     mu,
+                  const AffineConstraints<double> &constraints,
+                  VectorType                      *rhs,
+                  MatrixType                      *hessian,
+                  std::vector<double>             *forces = nullptr) const;
+
+      /// Penetration and forces of the state @p u with nodal forces
+      /// @p forces (one per owned node).
+      Summary
+      summarize(const VectorType &u, const std::vector<double> &forces) const;
+
+      /**
+       * Write the profile along Gamma_2 (rank 0 writes, all ranks call):
+       * reference and current coordinates, gap, pressure, force, and a
+       * reference pressure where @p reference_pressure is given (a
+       * function of the current position), sorted by the reference
+       * coordinates.
+       */
+      void
+      write_profile(const std::string                              &file,
+                    const VectorType                               &u,
+                    const std::vector<double>                      &forces,
+                    const std::function<double(const Point<dim> &)> &reference_pressure) const;
+
+      /**
+       * Contact pressure, gap (x_d - psi, signed) and active flag as nodal
+       * fields for DataOut; the vectors live in this object until the next
+       * call.
+       */
+      void
+      add_output_fields(DataOut<dim>              &data_out,
+                        const VectorType          &u,
+                        const std::vector<double> &forces);
+
+      /**
+       * Pressure samples (current position, pressure) of all nodes with a
+       * positive force, gathered on every rank and sorted by position.
+       */
+      std::vector<std::pair<Point<dim>, double>>
+      gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
+
+    private:
+      /// A node is active if its force exceeds 1e-6 of the largest one
+      /// (Ipopt leaves multipliers of order mu / gap on free nodes).
+      double
+      active_threshold(const std::vector<double> &forces) const;
+
+      std::unique_ptr<Foundation<dim>> surface;
+      types::boundary_id               contact_boundary;
+      const DoFHandler<dim>           &dof_handler;
+      const Mapping<dim>              &mapping;
+      std::vector<Node>                contact_nodes;
+      unsigned int                     n_global = 0;
+      double                           mean_h   = 0.;
+      double                           min_h    = 0.;
+
+      // Nodal output fields on a scalar FE_Q of the displacement's degree.
+      std::unique_ptr<FE_Q<dim>> scalar_fe;
+      DoFHandler<dim>            scalar_dof_handler;
+      VectorType                 pressure_field, gap_field, active_field;
+    };
+  } // namespace Contact
+} // namespace Signorini

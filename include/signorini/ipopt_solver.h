@@ -1,0 +1,151 @@
+#pragma once
+
+#include <signorini/contact/rigid_foundation.h>
+#include <signorini/energy_functional.h>
+#include <signorini/incompressibility.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * Constrained minimisation of the total potential energy with the
+   * interior point optimiser Ipopt (formulation.md (11)):
+   *
+   *   min E(U)  subject to  g_k(U) >= 0 (rigid foundation contact),
+   *                         c_K(U) = 0 (incompressibility per cell),
+   *
+   * with exact derivatives: the gradient of E, the sparse constraint
+   * Jacobian, and the sparse Hessian of the Lagrangian
+   * sigma grad^2 E + sum lambda_k grad^2 g_k + sum lambda_K grad^2 c_K.
+   * The optimisation variables are the DoFs that are neither Dirichlet
+   * nor hanging-node constrained; the others follow from the constraints.
+   * The Hessian's sparsity is the finite element pattern restricted to
+   * the free DoFs (lower triangle), built once per mesh.
+   *
+   * Ipopt runs on one MPI rank. Between load steps the solver warm-starts
+   * from the previous primal and dual solution.
+   */
+  template <int dim>
+  class IpoptSolver
+  {
+  public:
+    struct Parameters
+    {
+      double       tolerance       = 1e-9;
+      unsigned int max_iterations  = 500;
+      std::string  mu_strategy     = "adaptive";
+      int          print_level     = 0;
+      int          file_print_level = 5;
+      std::string  options_file;
+      std::string  derivative_test = "none";
+      double       derivative_test_perturbation = 1e-3;
+      bool         warm_start      = true;
+      double       warm_start_mu   = 1e-6;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+    };
+
+    struct Result
+    {
+      bool                success    = false;
+      std::string         status;
+      unsigned int        iterations = 0;
+      std::vector<double> contact_forces;      // per contact node (>= 0)
+      std::vector<double> pressure_multipliers; // per constrained cell
+      int                 derivative_test_errors = -1; // -1: not run
+    };
+
+    IpoptSolver(const Parameters                  &parameters,
+                const DoFHandler<dim>             &dof_handler,
+                const EnergyFunctional<dim>       &energy,
+                const Contact::RigidFoundation<dim> *contact,
+                const Incompressibility<dim>      *incompressibility,
+                const std::string                 &output_directory,
+                ConditionalOStream                &progress,
+                TimerOutput                       &timer);
+    ~IpoptSolver();
+
+    /**
+     * Build the variable map and the sparsity structures. @p constraints:
+     * the homogeneous Dirichlet and hanging-node constraints; @p hessian:
+     * the problem's matrix (its pattern is used).
+     */
+    void
+    setup(const AffineConstraints<double> &constraints, MatrixType &hessian);
+
+    /**
+     * Minimise at load time @p time. @p target: the Dirichlet values and
+     * hanging nodes at this time (inhomogeneous constraints, used to
+     * complete each iterate). @p u (ghosted, serial) holds the start and
+     * receives the last iterate, whether or not Ipopt succeeded.
+     */
+    Result
+    solve(const double                     time,
+          const AffineConstraints<double> &target,
+          VectorType                      &u);
+
+    class Problem;
+
+  private:
+    friend class Problem;
+
+    /// Add value * d(dof)/d(variables) to @p row: the DoF's own variable
+    /// or, for a hanging node, its parents' (Dirichlet DoFs drop out).
+    void
+    add_condensed(const types::global_dof_index dof,
+                  const double                  value,
+                  std::map<int, double>        &row) const;
+
+    Parameters                           parameters;
+    const DoFHandler<dim>               &dof_handler;
+    const EnergyFunctional<dim>         &energy;
+    const Contact::RigidFoundation<dim> *contact;
+    const Incompressibility<dim>        *incompressibility;
+    std::string                          output_directory;
+    ConditionalOStream                  &progress;
+    TimerOutput                         &timer;
+
+    const AffineConstraints<double> *constraints = nullptr;
+    MatrixType                      *hessian     = nullptr;
+    std::vector<types::global_dof_index> free_dofs;  // variable -> DoF
+    std::vector<int>                     variable_of; // DoF -> variable or -1
+    // Contact rows: the nodes with a free component, and their entries.
+    std::vector<unsigned int>              contact_rows;
+    std::vector<std::vector<std::pair<unsigned int, int>>> contact_entries; // (component, variable)
+    // Incompressibility rows: the sorted variables each cell row touches.
+    std::vector<std::vector<int>> cell_entries;
+    // Lower-triangle Hessian structure, in matrix row iteration order.
+    std::vector<int> hessian_rows, hessian_cols;
+    std::vector<int>          local_rows;    // Epetra row of each variable
+    std::vector<unsigned int> row_starts;    // CSR offsets into row_positions
+    std::vector<int>          row_positions; // entry index within the row
+    unsigned int     n_jacobian_entries = 0;
+
+    // Warm start.
+    bool                warm = false;
+    std::vector<double> last_lambda;
+
+    // The Ipopt application (created once: it keeps its journal open).
+    struct Application;
+    std::unique_ptr<Application> application;
+    bool                         application_has_file = false;
+    void
+    create_application(const bool with_output_file);
+  };
+} // namespace Signorini

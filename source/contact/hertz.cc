@@ -1,0 +1,153 @@
+#include <signorini/contact/hertz.h>
+#include <signorini/input_error.h>
+
+#include <deal.II/base/numbers.h>
+
+#include <cmath>
+#include <limits>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    double
+    HertzReference::half_width() const
+    {
+      return std::sqrt(4. * line_load * radius / (numbers::PI * contact_modulus));
+    }
+
+    double
+    HertzReference::peak_pressure() const
+    {
+      return 2. * line_load / (numbers::PI * half_width());
+    }
+
+    double
+    HertzReference::pressure(const double x) const
+    {
+      const double s = (x - axis) / half_width();
+      return std::abs(s) < 1. ? peak_pressure() * std::sqrt(1. - s * s) : 0.;
+    }
+
+    void
+    HertzReference::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Line load",
+                        "0",
+                        Patterns::Double(0.),
+                        "P, force per unit thickness on the whole cylinder "
+                        "[force/length]; 0: the scene has no Hertz reference.");
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(0.),
+                        "Effective radius R [length], 1/R = 1/R1 + 1/R2 "
+                        "(a concave foundation of radius R2 counts "
+                        "negative: 1/R = 1/R1 - 1/R2).");
+      prm.declare_entry("Axis position",
+                        "0",
+                        Patterns::Double(),
+                        "x coordinate of the cylinder's axis [length].");
+      prm.declare_entry("Modelled fraction",
+                        "1",
+                        Patterns::Double(0., 1.),
+                        "Fraction of the cylinder the mesh holds (0.5 for a "
+                        "quarter disk with a symmetry line): the reference "
+                        "total contact force is this times P.");
+      prm.declare_entry("Contact modulus",
+                        "0",
+                        Patterns::Double(0.),
+                        "E* [stress]; 0: E / (1 - nu^2) of Body 1's "
+                        "small-strain moduli (a rigid foundation).");
+      prm.declare_entry("Tolerance a",
+                        "0",
+                        Patterns::Double(0.),
+                        "Relative tolerance on the contact half-width a (0: "
+                        "not checked).");
+      prm.declare_entry("Tolerance p0",
+                        "0",
+                        Patterns::Double(0.),
+                        "Relative tolerance on the peak pressure p0 (0: not "
+                        "checked).");
+      prm.declare_entry("Tolerance force",
+                        "0",
+                        Patterns::Double(0.),
+                        "Relative tolerance on the total contact force (0: "
+                        "not checked).");
+    }
+
+    void
+    HertzReference::parse_parameters(ParameterHandler &prm)
+    {
+      line_load         = prm.get_double("Line load");
+      radius            = prm.get_double("Radius");
+      axis              = prm.get_double("Axis position");
+      modelled_fraction = prm.get_double("Modelled fraction");
+      contact_modulus   = prm.get_double("Contact modulus");
+      tolerance_a       = prm.get_double("Tolerance a");
+      tolerance_p0      = prm.get_double("Tolerance p0");
+      tolerance_force   = prm.get_double("Tolerance force");
+      if (line_load > 0. && !(radius > 0.))
+        throw InputError("Contact > Hertz reference > Radius", "must be > 0");
+      if (line_load > 0. && !(modelled_fraction > 0.))
+        throw InputError("Contact > Hertz reference > Modelled fraction",
+                         "must be > 0");
+    }
+
+    std::vector<Quantity>
+    HertzReference::quantities(
+      const std::vector<std::pair<double, double>> &samples) const
+    {
+      std::vector<Quantity> q(3);
+      q[0].name          = "hertz_a";
+      q[0].has_reference = true;
+      q[0].reference     = half_width();
+      q[0].tolerance     = tolerance_a;
+      q[0].value         = std::numeric_limits<double>::quiet_NaN();
+      q[1].name          = "hertz_p0";
+      q[1].has_reference = true;
+      q[1].reference     = peak_pressure();
+      q[1].tolerance     = tolerance_p0;
+      q[1].value         = std::numeric_limits<double>::quiet_NaN();
+      q[2].name          = "contact_nodes_inside_a";
+      if (samples.empty())
+        return q;
+
+      double p_max = 0., nearest = std::numeric_limits<double>::max();
+      for (const auto &s : samples)
+        {
+          p_max = std::max(p_max, s.second);
+          const double d = std::abs(s.first - axis);
+          if (d < nearest)
+            {
+              nearest    = d;
+              q[1].value = s.second;
+            }
+          if (d < half_width())
+            q[2].value += 1.;
+        }
+      // Least squares of p^2 = A - B s^2 over the well-loaded nodes.
+      double       sx = 0., sy = 0., sxx = 0., sxy = 0.;
+      unsigned int n = 0;
+      for (const auto &s : samples)
+        if (s.second >= 0.25 * p_max)
+          {
+            const double x = (s.first - axis) * (s.first - axis);
+            const double y = s.second * s.second;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+            ++n;
+          }
+      const double det = n * sxx - sx * sx;
+      if (n >= 2 && det > 0.)
+        {
+          const double slope     = (n * sxy - sx * sy) / det; // -B
+          const double intercept = (sy - slope * sx) / n;     // A
+          if (slope < 0. && intercept > 0.)
+            q[0].value = std::sqrt(-intercept / slope);
+        }
+      return q;
+    }
+  } // namespace Contact
+} // namespace Signorini
