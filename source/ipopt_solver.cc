@@ -609,6 +609,20 @@ namespace Signorini
       {
         std::string text = chatter.str();
         std::replace(text.begin(), text.end(), '\n', ' ');
+        // Name the line of the options file that Ipopt does not know.
+        std::ifstream in(parameters.options_file);
+        std::string   line;
+        for (unsigned int number = 1; std::getline(in, line); ++number)
+          {
+            std::istringstream words(line);
+            std::string        name;
+            if (!(words >> name) || name[0] == '#')
+              continue;
+            if (IsNull(app->RegOptions()->GetOption(name)))
+              throw InputError(parameters.options_file + ":" +
+                                 std::to_string(number),
+                               "'" + name + "' is not an Ipopt option");
+          }
         throw InputError(parameters.options_file.empty() ? "Solver > Ipopt" :
                                                            parameters.options_file,
                          "Ipopt rejected its options (" + status_name(status) +

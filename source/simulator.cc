@@ -393,7 +393,15 @@ namespace Signorini
     linear_solver = std::make_unique<LinearSolver>(linear_parameters);
     timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
-    setup_dofs();
+    try
+      {
+        setup_dofs();
+      }
+    catch (...)
+      {
+        timer.reset(); // quietly, while the exception is caught
+        throw;
+      }
     if (contact)
       {
         report.contact_nodes = contact->n_global_nodes();
@@ -773,6 +781,13 @@ namespace Signorini
               if (contact)
                 for (const auto &q : contact_quantities(step, record))
                   report.quantities.push_back(q);
+              if (report.derivative_test_errors >= 0)
+                {
+                  Quantity q;
+                  q.name  = "ipopt_derivative_test_errors";
+                  q.value = report.derivative_test_errors;
+                  report.quantities.push_back(q);
+                }
             }
             report.steps.push_back(record);
             {

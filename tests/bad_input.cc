@@ -61,15 +61,15 @@ end
 
   void
   run_case(const std::string &name, const std::string &text, std::ostream &out,
-           const bool write_file = true)
+           const bool write_file = true, const std::string &launcher = "")
   {
     const std::string file = name + ".prm";
     const std::string folder = "cases/" + name;
     if (write_file)
       std::ofstream(file) << "set Output directory = " << folder << "\n" << text;
     std::filesystem::remove_all(folder);
-    const std::string command =
-      std::string(SIGNORINI_EXECUTABLE) + " " + file + " 2>&1 >/dev/null";
+    const std::string command = launcher + std::string(SIGNORINI_EXECUTABLE) +
+                                " " + file + " 2>&1 >/dev/null";
     FILE       *pipe = popen(command.c_str(), "r");
     std::string message;
     char        buffer[512];
@@ -77,6 +77,19 @@ end
       message += buffer;
     const int status = pclose(pipe);
     const int code   = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    // Keep the program's own lines (mpirun adds its own report).
+    std::string own;
+    std::size_t start = 0;
+    while (start < message.size())
+      {
+        const std::size_t end  = message.find('\n', start);
+        const std::string line = message.substr(start, end - start);
+        if (line.rfind("signorini", 0) == 0)
+          own += line + "\n";
+        start = (end == std::string::npos ? message.size() : end + 1);
+      }
+    if (!own.empty())
+      message = own;
     while (!message.empty() && message.back() == '\n')
       message.pop_back();
     out << name << ": exit " << code << ", output folder "
@@ -131,4 +144,47 @@ main()
   run_case("duplicate_material_id",
            scene({{"@EXTRA@", "subsection Body 2\n  set Active = true\n  set Material id = 0\nend"}}), out);
   run_case("missing_parameter_file", "", out, false);
+
+  // Contact and solver input.
+  const std::string contact = "subsection Contact\n  set Type = rigid foundation\n"
+                              "  set Contact boundary id = @ID@\n"
+                              "  subsection Foundation\n    @PSI@\n  end\nend\n"
+                              "subsection Solver\n  set Method = @METHOD@\nend";
+  auto with_contact = [&](const std::string &id, const std::string &psi,
+                          const std::string &method) {
+    return scene({{"@EXTRA@",
+                   replace(replace(replace(contact, "@ID@", id), "@PSI@", psi),
+                           "@METHOD@", method)}});
+  };
+  run_case("contact_boundary_not_in_mesh",
+           with_contact("7", "set Shape = plane", "newton-penalty"), out);
+  run_case("contact_psi_does_not_parse",
+           with_contact("3", "set Shape = expression\n    set Function = 0.1*x^^2",
+                        "newton-penalty"),
+           out);
+  run_case("contact_psi_gradient_count",
+           with_contact("3", "set Shape = expression\n    set Function = x\n"
+                             "    set Gradient = 1; 2", "ipopt"),
+           out);
+  run_case("contact_with_plain_newton",
+           with_contact("3", "set Shape = plane", "newton"), out);
+  run_case("penalty_without_contact",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = newton-penalty\nend"}}),
+           out);
+  run_case("incompressible_without_ipopt",
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Incompressible = true"}}),
+           out);
+  run_case("incompressible_neo_hookean",
+           scene({{"@MATERIAL@", "set Incompressible = true"},
+                  {"@EXTRA@", "subsection Solver\n  set Method = ipopt\nend"}}),
+           out);
+  std::ofstream("bad.opt") << "not_an_ipopt_option 3\n";
+  run_case("unknown_ipopt_option",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\n"
+                              "  subsection Ipopt\n    set Options file = bad.opt\n"
+                              "  end\nend"}}),
+           out);
+  run_case("ipopt_on_two_ranks",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\nend"}}),
+           out, true, "mpirun --allow-run-as-root --oversubscribe -np 2 ");
 }
