@@ -23,9 +23,15 @@ namespace Signorini
                       "definite matrix. AMG uses the displacement "
                       "translations as near-null-space modes.");
     prm.declare_entry("Direct solver",
-                      "Amesos_Klu",
-                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                      "The Amesos direct solver.");
+                      "auto",
+                      Patterns::Selection("auto|Amesos_Klu|Amesos_Mumps"),
+                      "The Amesos direct solver. Amesos_Mumps (multifrontal "
+                      "with a fill-reducing ordering) is about 2.3x faster "
+                      "than Amesos_Klu on the 51k-DoF Hertz mesh, but "
+                      "Debian's Trilinos links the sequential MUMPS, so it "
+                      "runs on one MPI rank only; KLU gathers the matrix and "
+                      "works with any number of ranks. auto: MUMPS on one "
+                      "rank, KLU on several.");
     prm.declare_entry("Relative tolerance",
                       "1e-8",
                       Patterns::Double(0., 1.),
@@ -57,6 +63,14 @@ namespace Signorini
             t == "cg-amg" ? Type::cg_amg :
                             Type::minres_amg);
     direct_solver         = prm.get("Direct solver");
+    const unsigned int ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (direct_solver == "auto")
+      direct_solver = (ranks == 1 ? "Amesos_Mumps" : "Amesos_Klu");
+    else if (direct_solver == "Amesos_Mumps" && ranks > 1)
+      throw InputError("Solver > Linear solver > Direct solver",
+                       "Amesos_Mumps runs on one MPI rank only (Debian's "
+                       "Trilinos uses the sequential MUMPS); this run has " +
+                         std::to_string(ranks) + " ranks: use Amesos_Klu or auto");
     relative_tolerance    = prm.get_double("Relative tolerance");
     max_iterations        = prm.get_integer("Maximum iterations");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");

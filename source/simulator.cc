@@ -685,6 +685,7 @@ namespace Signorini
   Simulator<dim>::run(ParameterHandler &prm)
   {
     const bool root = (Utilities::MPI::this_mpi_process(comm) == 0);
+    Timer      run_timer;
     {
       std::string error;
       if (root)
@@ -813,6 +814,8 @@ namespace Signorini
       }
 
     report.timing["setup"] = setup_seconds;
+    report.timing["total"] =
+      setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
     for (const auto &entry :
          timer->get_summary_data(TimerOutput::total_wall_time))
       report.timing[entry.first] = Utilities::MPI::max(entry.second, comm);

@@ -31,7 +31,7 @@ namespace Signorini
         minres_amg
       };
       Type         type = Type::direct;
-      std::string  direct_solver = "Amesos_Klu";
+      std::string  direct_solver = "Amesos_Klu"; // "auto" is resolved when parsed
       double       relative_tolerance = 1e-8;
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;
