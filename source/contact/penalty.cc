@@ -116,8 +116,36 @@ namespace Signorini
     {
       ContinuationResult result;
       double             mu = mu_start;
+      // Stage solutions behave like u(mu) = u_inf + c mu^(-1/2) (the
+      // penetration of a node with a given force falls like mu^(-1/2)):
+      // from two stages, extrapolate the start of the next one.
+      VectorType previous(u);
+      double     previous_r = 0.;
       for (unsigned int s = 0; s < parameters.max_stages; ++s)
         {
+          if (s >= 2)
+            {
+              const double r      = 1. / std::sqrt(mu);
+              const double last_r = 1. / std::sqrt(result.stages.back().mu);
+              VectorType   predicted(u);
+              predicted.add((r - last_r) / (last_r - previous_r), u);
+              predicted.add(-(r - last_r) / (last_r - previous_r), previous);
+              ghosted = predicted;
+              PenaltyObjective<dim> check(energy, contact, time, mu);
+              if (check.evaluate(ghosted, constraints, nullptr, nullptr).admissible)
+                {
+                  previous = u;
+                  u        = predicted;
+                }
+              else
+                previous = u;
+              previous_r = last_r;
+            }
+          else if (s == 1)
+            {
+              previous   = u;
+              previous_r = 1. / std::sqrt(result.stages.back().mu);
+            }
           progress << "  stage " << s + 1 << ": mu = " << std::scientific
                    << std::setprecision(3) << mu << std::defaultfloat
                    << std::endl;
