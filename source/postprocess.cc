@@ -386,6 +386,28 @@ namespace Signorini
       }
   }
 
+  template <int dim>
+  void
+  Postprocessor<dim>::write_snapshot(const VectorType &u, const std::string &name)
+  {
+    if (format == "none")
+      return;
+    const StressOutput<dim> stress(materials);
+    DataOut<dim>            data_out;
+    data_out.attach_dof_handler(dof_handler);
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(u,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    data_out.add_data_vector(u, stress);
+    data_out.build_patches(mapping, dof_handler.get_fe().degree,
+                           DataOut<dim>::curved_inner_cells);
+    data_out.write_vtu_with_pvtu_record(output_directory + "/", name, 0,
+                                        dof_handler.get_communicator(), 4);
+  }
+
   template class Postprocessor<2>;
   template class Postprocessor<3>;
 } // namespace Signorini

@@ -724,6 +724,7 @@ namespace Signorini
     unsigned int   step      = 0;
     unsigned int   cuts      = 0;
     VectorType     backup(solution);
+    VectorType     failed_iterate;
     try
       {
         while (t < end_time * (1. - 1e-12))
@@ -739,6 +740,7 @@ namespace Signorini
             const std::vector<double>   backup_forces = contact_forces;
             if (!solve_load_step(t_new, stats, record))
               {
+                failed_iterate = solution;
                 solution       = backup;
                 contact_forces = backup_forces;
                 ++cuts;
@@ -807,9 +809,19 @@ namespace Signorini
       {
         report.status = "failed";
         report.reason = e.what();
+        // The solver's last iterate of the failed step, for diagnosis (not
+        // part of the solution series).
+        if (failed_iterate.size() > 0)
+          {
+            solution_ghosted = failed_iterate;
+            postprocessor->write_snapshot(solution_ghosted, "failed_iterate");
+            solution_ghosted = solution;
+          }
         pcout << "Run failed: " << report.reason << std::endl
               << "The output of the last converged step (t = "
               << report.final_time << ") is in " << output_directory
+              << "; the solver's last iterate of the failed step is in "
+                 "failed_iterate_0000.pvtu there"
               << std::endl;
       }
 

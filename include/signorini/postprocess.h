@@ -81,6 +81,14 @@ namespace Signorini
                  const unsigned int step,
                  const bool         last_step);
 
+    /**
+     * Write the state @p u outside the solution series, as
+     * NAME_0000.pvtu (+ .vtu): used for the last iterate of a failed
+     * solve, which must not be presented as a result.
+     */
+    void
+    write_snapshot(const VectorType &u, const std::string &name);
+
     /// Called before the patches are built, to add further fields.
     std::function<void(DataOut<dim> &)> extra_fields;
 
