@@ -1,0 +1,75 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/point.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  namespace Contact
+  {
+    /**
+     * The smooth indicator function of a deformable body (formulation.md
+     * section 3). For every face of body 2's potential contact surface,
+     * in the current configuration, build modified simplices:
+     *
+     * - 2D: the face [B, C] is stretched along its own line to
+     *   B' = B - s (C - B), C' = C + s (C - B) (s = 'stretch', 0.12 in the
+     *   poster's figure), and the apex A is the midpoint of the cell's
+     *   opposite face [D, E]. One triangle (A, B', C').
+     * - 3D: the quad face Q0 Q1 Q2 Q3 is split along Q0-Q2 into two
+     *   triangles, each scaled about its centroid by 1 + 2s, and the apex
+     *   is the centroid of the opposite face. Two tetrahedra.
+     *
+     * F_T(x) = Fp(M_T^-1 (x - A)), M_T = [V1 - A | ... | Vd - A], with
+     * Fp(xi) = c <xi_1>^3 ... <xi_d>^3 <1 - sum xi>^3, normalised by c
+     * (3^9 in 2D, 4^12 in 3D) so that its maximum is 1. Fp is C^2 and
+     * positive exactly inside the simplex, so F_T vanishes on the contact
+     * surface (the base's plane) and outside the body, is positive just
+     * inside it, and the stretched bases of neighbouring faces overlap, so
+     * the sum over faces Phi = sum_T F_T has no zero line at shared
+     * vertices.
+     *
+     * The variables of one face term are the coordinates of the point x
+     * and of the cell's vertices that define the simplices: x, the face
+     * vertices, the opposite face's vertices (2D: 5 points, 10 variables;
+     * 3D: 9 points, 27 variables), in this order.
+     */
+    template <int dim>
+    struct IndicatorFace
+    {
+      static constexpr unsigned int n_face_vertices = (dim == 2 ? 2 : 4);
+      static constexpr unsigned int n_points  = 1 + 2 * n_face_vertices;
+      static constexpr unsigned int n_variables = dim * n_points;
+
+      /// Face vertices in order (2D: B, C; 3D: cyclic Q0..Q3) and the
+      /// opposite face's vertices, vertex i opposite face vertex i.
+      std::array<Point<dim>, n_face_vertices> face;
+      std::array<Point<dim>, n_face_vertices> opposite;
+
+      /// Sum of the face's simplex terms F_T at x.
+      double
+      value(const Point<dim> &x, const double stretch) const;
+
+      /**
+       * Value, gradient and Hessian with respect to the n_variables
+       * variables (x first, then face, then opposite vertices), by
+       * forward-mode automatic differentiation (nested Sacado DFad).
+       */
+      double
+      derivatives(const Point<dim>  &x,
+                  const double        stretch,
+                  Vector<double>     &gradient,
+                  FullMatrix<double> &hessian) const;
+
+      /// A box containing every point where the face's terms are > 0.
+      BoundingBox<dim>
+      bounding_box(const double stretch) const;
+    };
+  } // namespace Contact
+} // namespace Signorini
