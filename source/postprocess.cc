@@ -325,17 +325,10 @@ namespace Signorini
 
   template <int dim>
   void
-  Postprocessor<dim>::write_output(const VectorType  &u,
-                                   const double       time,
-                                   const unsigned int step,
-                                   const bool         last_step)
+  Postprocessor<dim>::add_displacement_fields(const VectorType             &u,
+                                              const DataPostprocessor<dim> &stress,
+                                              DataOut<dim> &data_out) const
   {
-    if (format == "none" || (step % interval != 0 && !last_step))
-      return;
-    const MPI_Comm         comm = dof_handler.get_communicator();
-    const StressOutput<dim> stress(materials);
-
-    DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim, DataComponentInterpretation::component_is_part_of_vector);
@@ -344,6 +337,21 @@ namespace Signorini
                              DataOut<dim>::type_dof_data,
                              interpretation);
     data_out.add_data_vector(u, stress);
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::write_output(const VectorType  &u,
+                                   const double       time,
+                                   const unsigned int step,
+                                   const bool         last_step)
+  {
+    if (format == "none" || (step % interval != 0 && !last_step))
+      return;
+    const MPI_Comm          comm = dof_handler.get_communicator();
+    const StressOutput<dim> stress(materials);
+    DataOut<dim>            data_out;
+    add_displacement_fields(u, stress, data_out);
 
     const auto &tria = dof_handler.get_triangulation();
     Vector<float> material_id(tria.n_active_cells()), rank(tria.n_active_cells());
@@ -394,14 +402,7 @@ namespace Signorini
       return;
     const StressOutput<dim> stress(materials);
     DataOut<dim>            data_out;
-    data_out.attach_dof_handler(dof_handler);
-    std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(dim, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(u,
-                             std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data,
-                             interpretation);
-    data_out.add_data_vector(u, stress);
+    add_displacement_fields(u, stress, data_out);
     data_out.build_patches(mapping, dof_handler.get_fe().degree,
                            DataOut<dim>::curved_inner_cells);
     data_out.write_vtu_with_pvtu_record(output_directory + "/", name, 0,

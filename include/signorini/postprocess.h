@@ -11,6 +11,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <functional>
 #include <map>
@@ -99,6 +100,12 @@ namespace Signorini
     }
 
   private:
+    /// Attach the DoFHandler and add the displacement and @p stress fields.
+    void
+    add_displacement_fields(const VectorType             &u,
+                            const DataPostprocessor<dim> &stress,
+                            DataOut<dim>                 &data_out) const;
+
     const DoFHandler<dim>                                           &dof_handler;
     const Mapping<dim>                                              &mapping;
     const std::map<types::material_id, const Material::Interface *> &materials;
