@@ -902,7 +902,8 @@ namespace Signorini
       {
         Json o = Json::object();
         o["time"]              = s.time;
-        o["newton iterations"] = s.newton_iterations;
+        o[method == "ipopt" ? "ipopt iterations" : "newton iterations"] =
+          s.newton_iterations;
         o["backtracks"]        = s.backtracks;
         o["regularized steps"] = s.regularized;
         o["linear iterations"] = s.linear_iterations;
