@@ -1,5 +1,6 @@
 #include <signorini/input_error.h>
 #include <signorini/mesh.h>
+#include <signorini/parameters.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
@@ -53,34 +54,6 @@ namespace Signorini
                       "bodies of one scene get distinct ids (e.g. 10 for the "
                       "second body).");
   }
-
-  namespace
-  {
-    template <typename T>
-    std::vector<T>
-    get_list(ParameterHandler  &prm,
-             const std::string &key,
-             const unsigned int dim,
-             const std::string &context)
-    {
-      const std::vector<std::string> items =
-        Utilities::split_string_list(prm.get(key));
-      if (items.size() < dim)
-        throw InputError(context + " > " + key,
-                         "needs " + std::to_string(dim) +
-                           " entries in " + std::to_string(dim) +
-                           "D, got '" + prm.get(key) + "'");
-      std::vector<T> values;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          if constexpr (std::is_same_v<T, double>)
-            values.push_back(Utilities::string_to_double(items[d]));
-          else
-            values.push_back(Utilities::string_to_int(items[d]));
-        }
-      return values;
-    }
-  } // namespace
 
   void
   BodyGeometry::parse_parameters(ParameterHandler  &prm,

@@ -345,10 +345,8 @@ namespace Signorini
                        "a Hertz reference needs Contact > Type = rigid foundation");
     if (hertz.active() && hertz.contact_modulus <= 0.)
       {
-        const auto   lame = material_objects.front()->small_strain_lame();
-        const double E    = lame.first * (3. * lame.second + 2. * lame.first) /
-                         (lame.second + lame.first);
-        const double nu = lame.second / (2. * (lame.second + lame.first));
+        const auto [E, nu] =
+          Material::small_strain_young_poisson(*material_objects.front());
         hertz.contact_modulus = E / (1. - nu * nu);
       }
     if (method == "newton" && foundation)
@@ -412,11 +410,7 @@ namespace Signorini
                              "hanging node)");
         double E_max = 0.;
         for (const auto &m : material_objects)
-          {
-            const auto l = m->small_strain_lame();
-            E_max = std::max(E_max, l.first * (3. * l.second + 2. * l.first) /
-                                      (l.second + l.first));
-          }
+          E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
         mu0 = continuation_parameters.initial_factor * E_max /
               std::pow(contact->min_mesh_size(), 2);
         report.initial_penalty = mu0;
@@ -574,8 +568,8 @@ namespace Signorini
         if (contact)
           contact_forces = result.contact_forces;
         TimerOutput::Scope scope(*timer, "assembly");
-        stats.evaluation =
-          energy->evaluate(solution_ghosted, time, homogeneous_constraints, &rhs, nullptr);
+        stats.evaluation = energy->evaluate(solution_ghosted, time,
+                                            homogeneous_constraints, nullptr, nullptr);
         stats.residual = 0.;
         return true;
       }
@@ -635,7 +629,7 @@ namespace Signorini
 
   template <int dim>
   std::vector<Quantity>
-  Simulator<dim>::contact_quantities(const unsigned int, Report::Step &record)
+  Simulator<dim>::contact_quantities(Report::Step &record)
   {
     std::vector<Quantity> quantities;
     const auto summary = contact->summarize(solution_ghosted, contact_forces);
@@ -782,7 +776,7 @@ namespace Signorini
               report.quantities =
                 postprocessor->compute_quantities(solution_ghosted, t);
               if (contact)
-                for (const auto &q : contact_quantities(step, record))
+                for (const auto &q : contact_quantities(record))
                   report.quantities.push_back(q);
               if (report.derivative_test_errors >= 0)
                 {

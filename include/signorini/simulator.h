@@ -138,7 +138,7 @@ namespace Signorini
                     NewtonMinimizer::Statistics &stats,
                     Report::Step                &record);
     std::vector<Quantity>
-    contact_quantities(const unsigned int step, Report::Step &record);
+    contact_quantities(Report::Step &record);
     void
     write_summary() const;
 

@@ -1,6 +1,7 @@
 #include <signorini/boundary_conditions.h>
 #include <signorini/contact/foundation.h>
 #include <signorini/input_error.h>
+#include <signorini/parameters.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/numbers.h>
@@ -53,36 +54,6 @@ namespace Signorini
               break;
           }
         return result;
-      }
-
-      std::vector<double>
-      get_numbers(ParameterHandler  &prm,
-                  const std::string &key,
-                  const unsigned int n,
-                  const std::string &context)
-      {
-        std::vector<double> v;
-        for (const auto &s : Utilities::split_string_list(prm.get(key)))
-          {
-            try
-              {
-                v.push_back(Utilities::string_to_double(s));
-              }
-            catch (...)
-              {
-                throw InputError(context + " > " + key,
-                                 "'" + s + "' is not a number");
-              }
-            if (!std::isfinite(v.back()))
-              throw InputError(context + " > " + key,
-                               "'" + s + "' is not finite");
-          }
-        if (v.size() < n)
-          throw InputError(context + " > " + key,
-                           "needs " + std::to_string(n) + " number(s), got '" +
-                             prm.get(key) + "'");
-        v.resize(n);
-        return v;
       }
 
       /// psi = height + slope . x'
@@ -431,10 +402,10 @@ namespace Signorini
       if (shape == "plane")
         return std::make_unique<Plane<dim>>(
           prm.get_double("Height"),
-          get_numbers(prm, "Slope", dim - 1, context));
+          get_list<double>(prm, "Slope", dim - 1, context));
       if (shape == "circle")
         {
-          const auto c = get_numbers(prm, "Center", dim, context);
+          const auto c = get_list<double>(prm, "Center", dim, context);
           Point<dim> center;
           for (unsigned int d = 0; d < dim; ++d)
             center[d] = c[d];

@@ -123,28 +123,26 @@ namespace Signorini
       double     previous_r = 0.;
       for (unsigned int s = 0; s < parameters.max_stages; ++s)
         {
-          if (s >= 2)
+          if (s >= 1)
             {
-              const double r      = 1. / std::sqrt(mu);
+              // u holds stage s-1's solution, previous stage s-2's.
               const double last_r = 1. / std::sqrt(result.stages.back().mu);
-              VectorType   predicted(u);
-              predicted.add((r - last_r) / (last_r - previous_r), u);
-              predicted.add(-(r - last_r) / (last_r - previous_r), previous);
-              ghosted = predicted;
-              PenaltyObjective<dim> check(energy, contact, time, mu);
-              if (check.evaluate(ghosted, constraints, nullptr, nullptr).admissible)
+              VectorType   start(u);
+              if (s >= 2)
                 {
-                  previous = u;
-                  u        = predicted;
+                  const double factor =
+                    (1. / std::sqrt(mu) - last_r) / (last_r - previous_r);
+                  start.add(factor, u);
+                  start.add(-factor, previous);
+                  ghosted = start;
+                  PenaltyObjective<dim> check(energy, contact, time, mu);
+                  if (!check.evaluate(ghosted, constraints, nullptr, nullptr)
+                         .admissible)
+                    start = u;
                 }
-              else
-                previous = u;
-              previous_r = last_r;
-            }
-          else if (s == 1)
-            {
               previous   = u;
-              previous_r = 1. / std::sqrt(result.stages.back().mu);
+              previous_r = last_r;
+              u          = start;
             }
           progress << "  stage " << s + 1 << ": mu = " << std::scientific
                    << std::setprecision(3) << mu << std::defaultfloat

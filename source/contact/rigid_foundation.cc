@@ -237,7 +237,7 @@ namespace Signorini
               ++summary.n_active;
               summary.max_pressure =
                 std::max(summary.max_pressure,
-                         forces[k] * s.grad.norm() / contact_nodes[k].weight);
+                         pressure(contact_nodes[k], s, forces[k]));
             }
         }
       summary.n_active        = Utilities::MPI::sum(summary.n_active, comm);
@@ -261,7 +261,7 @@ namespace Signorini
         if (forces[k] > threshold)
           {
             const State s = evaluate(contact_nodes[k], u);
-            local.emplace_back(s.x, forces[k] * s.grad.norm() / contact_nodes[k].weight);
+            local.emplace_back(s.x, pressure(contact_nodes[k], s, forces[k]));
           }
       std::vector<std::pair<Point<dim>, double>> all;
       for (const auto &part :
@@ -298,7 +298,7 @@ namespace Signorini
             row.push_back(s.x[d]);
           row.push_back(s.g / s.grad.norm());
           row.push_back(s.penetration() / n.h);
-          row.push_back(forces[k] * s.grad.norm() / n.weight);
+          row.push_back(pressure(n, s, forces[k]));
           for (unsigned int d = 0; d < dim; ++d)
             row.push_back(forces[k] * s.grad[d]);
           row.push_back(n.weight);
@@ -342,8 +342,8 @@ namespace Signorini
                                             const std::vector<double> &forces)
     {
       const MPI_Comm comm = dof_handler.get_communicator();
-      VectorType     pressure(scalar_dof_handler.locally_owned_dofs(), comm);
-      VectorType     gap(pressure), active(pressure);
+      VectorType     nodal_pressure(scalar_dof_handler.locally_owned_dofs(), comm);
+      VectorType     gap(nodal_pressure), active(nodal_pressure);
       const double   threshold = active_threshold(forces);
       for (unsigned int k = 0; k < contact_nodes.size(); ++k)
         {
@@ -351,15 +351,15 @@ namespace Signorini
           const State s = evaluate(n, u);
           if (scalar_dof_handler.locally_owned_dofs().is_element(n.scalar_dof))
             {
-              pressure(n.scalar_dof) = forces[k] * s.grad.norm() / n.weight;
+              nodal_pressure(n.scalar_dof) = pressure(n, s, forces[k]);
               gap(n.scalar_dof)      = s.g / s.grad.norm();
               active(n.scalar_dof)   = (forces[k] > threshold ? 1. : 0.);
             }
         }
-      pressure.compress(VectorOperation::insert);
+      nodal_pressure.compress(VectorOperation::insert);
       gap.compress(VectorOperation::insert);
       active.compress(VectorOperation::insert);
-      pressure_field = pressure;
+      pressure_field = nodal_pressure;
       gap_field      = gap;
       active_field   = active;
       data_out.add_data_vector(scalar_dof_handler, pressure_field, "contact_pressure");

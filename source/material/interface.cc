@@ -65,6 +65,14 @@ namespace Signorini
       return r.P * transpose(F3) / determinant(F3);
     }
 
+    std::pair<double, double>
+    small_strain_young_poisson(const Interface &material)
+    {
+      const auto [mu, lambda] = material.small_strain_lame();
+      return {mu * (3. * lambda + 2. * mu) / (lambda + mu),
+              lambda / (2. * (lambda + mu))};
+    }
+
     void
     declare_parameters(ParameterHandler &prm)
     {

@@ -185,6 +185,14 @@ namespace Signorini
       gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
 
     private:
+      /// Pressure of @p node in state @p s carrying the force @p force
+      /// along grad g: force |grad g| / w_k.
+      static double
+      pressure(const Node &node, const State &s, const double force)
+      {
+        return force * s.grad.norm() / node.weight;
+      }
+
       /// A node is active if its force exceeds 1e-6 of the largest one
       /// (Ipopt leaves multipliers of order mu / gap on free nodes).
       double

@@ -87,6 +87,11 @@ namespace Signorini
     Tensor<2, 3>
     cauchy_stress(const Interface &material, const Tensor<2, dim> &F);
 
+    /// Young's modulus E and Poisson's ratio nu at F = I, from
+    /// Interface::small_strain_lame().
+    std::pair<double, double>
+    small_strain_young_poisson(const Interface &material);
+
     /// Declare the entries of a "Material" subsection.
     void
     declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  /**
+   * The first @p n entries of the comma-separated list @p key of the
+   * current subsection, converted to T (double or unsigned int). Throws
+   * InputError naming "@p context > @p key" if the list is shorter, an
+   * entry is not a number, or a double is not finite.
+   */
+  template <typename T>
+  std::vector<T>
+  get_list(dealii::ParameterHandler &prm,
+           const std::string        &key,
+           const unsigned int        n,
+           const std::string        &context);
+} // namespace Signorini
