@@ -251,6 +251,15 @@ namespace Signorini
                          << " of the Newton step" << std::endl;
               }
           }
+        {
+          const double limit = objective.max_step(ghosted, d);
+          if (limit < alpha)
+            {
+              alpha = limit;
+              progress << "      step limited to " << alpha
+                       << " of the Newton step by the contact model" << std::endl;
+            }
+        }
         bool   accepted = false;
         Evaluation trial_e;
         for (unsigned int k = 0; k <= parameters.max_backtracks; ++k)

@@ -134,18 +134,25 @@ namespace Signorini
     prm.enter_subsection("Contact");
     prm.declare_entry("Type",
                       "none",
-                      Patterns::Selection("none|rigid foundation"),
+                      Patterns::Selection("none|rigid foundation|two bodies"),
                       "none: no contact (no contact structures are built). "
                       "rigid foundation: the boundary 'Contact boundary id' "
                       "must stay above the surface of the Foundation "
-                      "subsection (node-wise constraints).");
+                      "subsection (node-wise constraints). two bodies: the "
+                      "boundary 'Contact boundary id' of body 1 must stay "
+                      "out of body 2, whose surface is the Two bodies "
+                      "subsection's 'Target boundary id' (smooth indicator "
+                      "function, penalty; Method = newton-penalty).");
     prm.declare_entry("Contact boundary id",
                       "0",
                       Patterns::Integer(0, 255),
-                      "Gamma_2: the boundary id of the potential contact "
-                      "boundary.");
+                      "Gamma_2 (Gamma_C of body 1 for two bodies): the "
+                      "boundary id of the potential contact boundary.");
     prm.enter_subsection("Foundation");
     Contact::Foundation<2>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Two bodies");
+    Contact::TwoBodyParameters::declare_parameters(prm);
     prm.leave_subsection();
     prm.enter_subsection("Hertz reference");
     Contact::HertzReference::declare_parameters(prm);
@@ -336,25 +343,59 @@ namespace Signorini
         report.foundation = foundation->description();
         prm.leave_subsection();
       }
+    Contact::TwoBodyParameters two_body_parameters;
+    const bool                 two_bodies = (report.contact_type == "two bodies");
+    if (two_bodies)
+      {
+        contact_id = prm.get_integer("Contact boundary id");
+        prm.enter_subsection("Two bodies");
+        two_body_parameters.parse_parameters(prm);
+        prm.leave_subsection();
+        for (const auto &[key, id] :
+             {std::make_pair(std::string("Contact boundary id"), contact_id),
+              std::make_pair(std::string("Two bodies > Target boundary id"),
+                             two_body_parameters.target_boundary)})
+          if (boundary_ids.count(id) == 0)
+            throw InputError("Contact > " + key,
+                             "boundary id " + std::to_string(id) +
+                               " does not exist in the mesh");
+        if (material_ids.size() < 2)
+          throw InputError("Contact > Type",
+                           "two bodies needs Body 2 > Active = true");
+        report.foundation = std::string("body 2, ") +
+                            (two_body_parameters.integral ? "integral" : "nodal") +
+                            " form";
+      }
     prm.enter_subsection("Hertz reference");
     hertz.parse_parameters(prm);
     prm.leave_subsection();
     prm.leave_subsection();
-    if (hertz.active() && !foundation)
+    if (hertz.active() && !foundation && !two_bodies)
       throw InputError("Contact > Hertz reference > Line load",
-                       "a Hertz reference needs Contact > Type = rigid foundation");
+                       "a Hertz reference needs contact (Contact > Type)");
     if (hertz.active() && hertz.contact_modulus <= 0.)
       {
-        const auto [E, nu] =
-          Material::small_strain_young_poisson(*material_objects.front());
-        hertz.contact_modulus = E / (1. - nu * nu);
+        // 1/E* = sum over the bodies in contact of (1 - nu^2)/E.
+        double compliance = 0.;
+        for (unsigned int b = 0; b < (two_bodies ? 2u : 1u); ++b)
+          {
+            const auto [E, nu] =
+              Material::small_strain_young_poisson(*material_objects[b]);
+            compliance += (1. - nu * nu) / E;
+          }
+        hertz.contact_modulus = 1. / compliance;
       }
-    if (method == "newton" && foundation)
+    if (method == "newton" && (foundation || two_bodies))
       throw InputError("Solver > Method",
-                       "the scene declares contact (Contact > Type = rigid "
-                       "foundation), which Method = newton cannot handle: use "
-                       "newton-penalty or ipopt");
-    if (method == "newton-penalty" && !foundation)
+                       "the scene declares contact (Contact > Type = " +
+                         report.contact_type +
+                         "), which Method = newton cannot handle: use "
+                         "newton-penalty");
+    if (method == "ipopt" && two_bodies)
+      throw InputError("Solver > Method",
+                       "two-body contact is solved by penalty continuation: "
+                       "use newton-penalty");
+    if (method == "newton-penalty" && !foundation && !two_bodies)
       throw InputError("Solver > Method",
                        "newton-penalty needs contact (Contact > Type); the "
                        "scene declares none: use newton");
@@ -375,6 +416,9 @@ namespace Signorini
     if (foundation)
       contact = std::make_unique<Contact::RigidFoundation<dim>>(
         std::move(foundation), contact_id, dof_handler, *mapping);
+    if (two_bodies)
+      two_body = std::make_unique<Contact::TwoBodyContact<dim>>(
+        two_body_parameters, contact_id, dof_handler, *mapping);
     postprocessor = std::make_unique<Postprocessor<dim>>(prm,
                                                          dof_handler,
                                                          *mapping,
@@ -419,6 +463,22 @@ namespace Signorini
           contact->add_output_fields(data_out, solution_ghosted, contact_forces);
         };
       }
+    if (two_body)
+      {
+        report.contact_nodes = two_body->n_global_nodes();
+        // mu P has the units of energy per length^(dim-1) times Phi (<= 1
+        // inside a simplex): mu_0 = c_0 E h.
+        double E_max = 0.;
+        for (const auto &m : material_objects)
+          E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
+        mu0 = continuation_parameters.initial_factor * E_max *
+              std::pow(two_body->min_mesh_size(), dim - 1);
+        report.initial_penalty = mu0;
+        last_mu                = mu0;
+        postprocessor->extra_fields = [this](DataOut<dim> &data_out) {
+          two_body->add_output_fields(data_out, solution_ghosted, contact_forces);
+        };
+      }
     setup_seconds = Utilities::MPI::max(setup_timer.wall_time(), comm);
   }
 
@@ -436,20 +496,15 @@ namespace Signorini
     hanging_constraints.close();
     homogeneous_constraints = boundary_constraints(0., true);
 
-    TrilinosWrappers::SparsityPattern sparsity(locally_owned,
-                                               locally_owned,
-                                               locally_relevant,
-                                               comm);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    sparsity,
-                                    homogeneous_constraints,
-                                    false,
-                                    Utilities::MPI::this_mpi_process(comm));
-    sparsity.compress();
-    hessian.reinit(sparsity);
     solution.reinit(locally_owned, comm);
     solution_ghosted.reinit(locally_owned, locally_relevant, comm);
     rhs.reinit(locally_owned, comm);
+    if (two_body)
+      {
+        two_body->setup(hanging_constraints, homogeneous_constraints);
+        contact_forces.assign(two_body->nodes().size() * dim, 0.);
+      }
+    build_matrix(solution_ghosted);
 
     if (contact)
       {
@@ -495,6 +550,30 @@ namespace Signorini
         box.get_boundary_points().second);
     }
     report.h_max = Utilities::MPI::max(h_max, comm);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::build_matrix(const VectorType &u)
+  {
+    // Two-body contact couples a body 1 point with body 2's vertices,
+    // possibly owned by other ranks: their rows must be writable here.
+    IndexSet writable = locally_relevant;
+    if (two_body)
+      writable.add_indices(two_body->coupled_rows());
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned,
+                                               locally_owned,
+                                               writable,
+                                               comm);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    homogeneous_constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    if (two_body)
+      two_body->add_sparsity(sparsity, homogeneous_constraints, u);
+    sparsity.compress();
+    hessian.reinit(sparsity);
   }
 
   template <int dim>
@@ -581,9 +660,17 @@ namespace Signorini
         mu0 :
         std::max(mu0, last_mu / continuation_parameters.max_growth);
     std::unique_ptr<Objective> objective;
+    Contact::PenaltyTerm<dim> *penalty_term =
+      contact ? static_cast<Contact::PenaltyTerm<dim> *>(contact.get()) :
+                static_cast<Contact::PenaltyTerm<dim> *>(two_body.get());
+    const typename Contact::PenaltyObjective<dim>::PatternBuilder rebuild =
+      [this](const VectorType &u) {
+        TimerOutput::Scope scope(*timer, "sparsity pattern");
+        build_matrix(u);
+      };
     if (method == "newton-penalty")
-      objective = std::make_unique<Contact::PenaltyObjective<dim>>(*energy, *contact,
-                                                                   time, mu_start);
+      objective = std::make_unique<Contact::PenaltyObjective<dim>>(
+        *energy, *penalty_term, time, mu_start, rebuild);
     else
       objective = std::make_unique<EnergyObjective<dim>>(*energy, time);
     if (has_prescribed_motion)
@@ -607,9 +694,10 @@ namespace Signorini
 
     const Contact::ContinuationResult result =
       Contact::penalty_continuation(continuation_parameters, newton, *energy,
-                                    *contact, time, mu_start,
+                                    *penalty_term, time, mu_start,
                                     homogeneous_constraints, solution,
-                                    solution_ghosted, hessian, rhs, progress);
+                                    solution_ghosted, hessian, rhs, progress,
+                                    rebuild);
     stats            = result.last;
     stats.iterations = result.newton_iterations;
     stats.converged  = result.converged;
@@ -632,16 +720,36 @@ namespace Signorini
   Simulator<dim>::contact_quantities(Report::Step &record)
   {
     std::vector<Quantity> quantities;
-    const auto summary = contact->summarize(solution_ghosted, contact_forces);
-    record.active_nodes      = summary.n_active;
-    record.penetration_ratio = summary.max_penetration_ratio;
-    record.contact_force     = summary.total_force[dim - 1];
+    Tensor<1, dim>        total_force;
+    std::vector<std::pair<Point<dim>, double>> pressure;
+    if (contact)
+      {
+        const auto summary = contact->summarize(solution_ghosted, contact_forces);
+        record.active_nodes      = summary.n_active;
+        record.penetration_ratio = summary.max_penetration_ratio;
+        total_force              = summary.total_force;
+        if (hertz.active())
+          pressure = contact->gather_pressure(solution_ghosted, contact_forces);
+      }
+    else
+      {
+        const auto summary = two_body->summarize(solution_ghosted, contact_forces);
+        record.active_nodes      = summary.n_active;
+        record.penetration_ratio = summary.max_penetration_ratio;
+        total_force              = summary.total_force;
+        record.pairs             = two_body->pair_statistics().last_pairs;
+        if (hertz.active())
+          pressure = two_body->gather_pressure(solution_ghosted, contact_forces);
+      }
+    record.contact_force = total_force[dim - 1];
+    for (unsigned int d = 0; d < dim; ++d)
+      record.contact_force_vector[d] = total_force[d];
     const char *axes = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
       {
         Quantity q;
         q.name  = std::string("contact_force_") + axes[d];
-        q.value = summary.total_force[d];
+        q.value = total_force[d];
         if (d == dim - 1 && hertz.active())
           {
             q.has_reference = true;
@@ -652,16 +760,16 @@ namespace Signorini
       }
     Quantity active;
     active.name  = "active_contact_nodes";
-    active.value = summary.n_active;
+    active.value = record.active_nodes;
     quantities.push_back(active);
     Quantity penetration;
     penetration.name  = "max_penetration_over_h";
-    penetration.value = summary.max_penetration_ratio;
+    penetration.value = record.penetration_ratio;
     quantities.push_back(penetration);
     if (hertz.active())
       {
         std::vector<std::pair<double, double>> samples;
-        for (const auto &p : contact->gather_pressure(solution_ghosted, contact_forces))
+        for (const auto &p : pressure)
           samples.emplace_back(p.first[0], p.second);
         for (const auto &q : hertz.quantities(samples))
           quantities.push_back(q);
@@ -669,8 +777,11 @@ namespace Signorini
     std::function<double(const Point<dim> &)> reference;
     if (hertz.active())
       reference = [this](const Point<dim> &x) { return hertz.pressure(x[0]); };
-    contact->write_profile(output_directory + "/contact_profile.csv",
-                           solution_ghosted, contact_forces, reference);
+    const std::string profile = output_directory + "/contact_profile.csv";
+    if (contact)
+      contact->write_profile(profile, solution_ghosted, contact_forces, reference);
+    else
+      two_body->write_profile(profile, solution_ghosted, contact_forces, reference);
     return quantities;
   }
 
@@ -775,7 +886,7 @@ namespace Signorini
               TimerOutput::Scope scope(*timer, "postprocessing");
               report.quantities =
                 postprocessor->compute_quantities(solution_ghosted, t);
-              if (contact)
+              if (contact || two_body)
                 for (const auto &q : contact_quantities(record))
                   report.quantities.push_back(q);
               if (report.derivative_test_errors >= 0)
@@ -865,15 +976,36 @@ namespace Signorini
     j["step cuts"]               = report.step_cuts;
     j[method == "ipopt" ? "ipopt iterations" : "newton iterations"] =
       report.newton_iterations;
-    if (contact)
+    if (contact || two_body)
       {
         Json &c                 = j["contact"];
         c["type"]               = report.contact_type;
-        c["boundary id"]        = static_cast<unsigned int>(contact->boundary_id());
-        c["foundation"]         = report.foundation;
+        c["boundary id"]        = static_cast<unsigned int>(
+          contact ? contact->boundary_id() : two_body->boundary_id());
+        c[contact ? "foundation" : "target"] = report.foundation;
         c["nodes"]              = report.contact_nodes;
-        c["mean mesh size"]     = contact->mean_mesh_size();
-        c["min mesh size"]      = contact->min_mesh_size();
+        c["mean mesh size"]     = contact ? contact->mean_mesh_size() :
+                                            two_body->mean_mesh_size();
+        c["min mesh size"]      = contact ? contact->min_mesh_size() :
+                                            two_body->min_mesh_size();
+        if (two_body)
+          {
+            const auto &p    = two_body->parameters();
+            const auto &ps   = two_body->pair_statistics();
+            c["target boundary id"] = static_cast<unsigned int>(p.target_boundary);
+            c["form"]         = p.integral ? "integral" : "nodal";
+            if (p.integral)
+              c["gauss points per face"] = p.gauss_points;
+            c["stretch"]      = p.stretch;
+            c["apex depth"]   = p.apex_depth;
+            Json &b           = c["broad phase"];
+            b["target faces"] = ps.target_faces;
+            b["evaluation points"] = ps.points;
+            b["evaluated pairs, last evaluation"] = ps.last_pairs;
+            b["evaluated pairs, largest"] = ps.max_pairs;
+            b["pairs in the sparsity pattern"] = ps.pattern_pairs;
+            b["sparsity pattern builds"] = ps.pattern_builds;
+          }
         if (method == "newton-penalty")
           {
             c["initial penalty"]           = report.initial_penalty;
@@ -920,11 +1052,13 @@ namespace Signorini
               }
             o["penalty stages"] = stages;
           }
-        if (contact)
+        if (contact || two_body)
           {
             o["active contact nodes"]   = s.active_nodes;
             o["max penetration over h"] = s.penetration_ratio;
             o["contact force"]          = s.contact_force;
+            if (two_body)
+              o["evaluated pairs"] = s.pairs;
           }
         steps.push_back(o);
       }
@@ -961,7 +1095,10 @@ namespace Signorini
         << "_iterations,backtracks,regularized_steps,"
            "linear_iterations,cuts_before,residual,energy,min_J,"
            "penalty_stages,final_penalty,active_contact_nodes,"
-           "max_penetration_over_h,contact_force\n"
+           "max_penetration_over_h,contact_force";
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ",contact_force_" << "xyz"[d];
+    csv << ",evaluated_pairs\n"
         << std::setprecision(12);
     for (unsigned int i = 0; i < report.steps.size(); ++i)
       {
@@ -973,7 +1110,10 @@ namespace Signorini
             << s.stages.size() << ","
             << (s.stages.empty() ? 0. : s.stages.back().mu) << ","
             << s.active_nodes << "," << s.penetration_ratio << ","
-            << s.contact_force << "\n";
+            << s.contact_force;
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << "," << s.contact_force_vector[d];
+        csv << "," << s.pairs << "\n";
       }
   }
 

@@ -8,6 +8,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <limits>
 #include <string>
 
 namespace Signorini
@@ -29,6 +30,20 @@ namespace Signorini
              const AffineConstraints<double> &constraints,
              VectorType                      *rhs,
              MatrixType                      *hessian) = 0;
+
+    /**
+     * The largest step length alpha for which u + alpha d is worth
+     * trying from the ghosted state @p u along the (locally owned)
+     * direction @p d; the line search starts from min(1, this). Default:
+     * no limit.
+     */
+    virtual double
+    max_step(const VectorType &u, const VectorType &d)
+    {
+      (void)u;
+      (void)d;
+      return std::numeric_limits<double>::infinity();
+    }
   };
 
   /**

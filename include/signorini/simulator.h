@@ -4,6 +4,7 @@
 #include <signorini/contact/hertz.h>
 #include <signorini/contact/penalty.h>
 #include <signorini/contact/rigid_foundation.h>
+#include <signorini/contact/two_body.h>
 #include <signorini/incompressibility.h>
 #include <signorini/ipopt_solver.h>
 #include <signorini/energy_functional.h>
@@ -60,6 +61,8 @@ namespace Signorini
       unsigned int active_nodes       = 0;
       double       penetration_ratio  = 0.;
       double       contact_force      = 0.; // along x_d
+      Tensor<1, 3> contact_force_vector;    // on body 1 (or the body)
+      unsigned long long pairs = 0;         // two bodies: evaluated pairs
     };
 
     std::string              scene;
@@ -129,6 +132,10 @@ namespace Signorini
   private:
     void
     setup_dofs();
+    /// (Re)build the Hessian's sparsity pattern, with the two-body contact
+    /// couplings found at the ghosted state @p u.
+    void
+    build_matrix(const VectorType &u);
     AffineConstraints<double>
     boundary_constraints(const double time, const bool homogeneous) const;
     AffineConstraints<double>
@@ -184,6 +191,7 @@ namespace Signorini
     std::unique_ptr<EnergyFunctional<dim>>                    energy;
     std::unique_ptr<Postprocessor<dim>>                       postprocessor;
     std::unique_ptr<Contact::RigidFoundation<dim>>            contact;
+    std::unique_ptr<Contact::TwoBodyContact<dim>>             two_body;
     std::unique_ptr<Incompressibility<dim>>                   incompressibility;
     std::unique_ptr<IpoptSolver<dim>>                         ipopt;
     std::vector<double> contact_forces; // nodal, of the last solve

@@ -68,6 +68,16 @@ namespace Signorini
                         Patterns::Double(0.),
                         "Relative tolerance on the peak pressure p0 (0: not "
                         "checked).");
+      prm.declare_entry("Peak pressure from",
+                        "axis node",
+                        Patterns::Selection("axis node|fit"),
+                        "Which estimate of p0 is hertz_p0 (checked against "
+                        "the tolerance): axis node: the pressure of the node "
+                        "nearest the axis; fit: sqrt(A) of the least-squares "
+                        "fit p^2 = A - B x^2 that also gives a (less "
+                        "sensitive to node-to-node scatter of the nodal "
+                        "pressure). The other estimate is reported as "
+                        "hertz_p0_fit or hertz_p0_axis_node.");
       prm.declare_entry("Tolerance force",
                         "0",
                         Patterns::Double(0.),
@@ -86,6 +96,7 @@ namespace Signorini
       tolerance_a       = prm.get_double("Tolerance a");
       tolerance_p0      = prm.get_double("Tolerance p0");
       tolerance_force   = prm.get_double("Tolerance force");
+      p0_from_fit       = (prm.get("Peak pressure from") == "fit");
       if (line_load > 0. && !(radius > 0.))
         throw InputError("Contact > Hertz reference > Radius", "must be > 0");
       if (line_load > 0. && !(modelled_fraction > 0.))
@@ -97,7 +108,7 @@ namespace Signorini
     HertzReference::quantities(
       const std::vector<std::pair<double, double>> &samples) const
     {
-      std::vector<Quantity> q(3);
+      std::vector<Quantity> q(4);
       q[0].name          = "hertz_a";
       q[0].has_reference = true;
       q[0].reference     = half_width();
@@ -109,6 +120,8 @@ namespace Signorini
       q[1].tolerance     = tolerance_p0;
       q[1].value         = std::numeric_limits<double>::quiet_NaN();
       q[2].name          = "contact_nodes_inside_a";
+      q[3].name          = p0_from_fit ? "hertz_p0_axis_node" : "hertz_p0_fit";
+      q[3].value         = std::numeric_limits<double>::quiet_NaN();
       if (samples.empty())
         return q;
 
@@ -145,8 +158,13 @@ namespace Signorini
           const double slope     = (n * sxy - sx * sy) / det; // -B
           const double intercept = (sy - slope * sx) / n;     // A
           if (slope < 0. && intercept > 0.)
-            q[0].value = std::sqrt(-intercept / slope);
+            {
+              q[0].value = std::sqrt(-intercept / slope);
+              q[3].value = std::sqrt(intercept); // the fit's p0
+            }
         }
+      if (p0_from_fit) // q[1] holds the axis node's value
+        std::swap(q[1].value, q[3].value);
       return q;
     }
   } // namespace Contact

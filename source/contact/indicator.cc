@@ -1,8 +1,11 @@
 #include <signorini/contact/indicator.h>
 
+#include <deal.II/base/tensor.h>
+
 #include <Sacado.hpp>
 
 #include <cmath>
+#include <type_traits>
 
 namespace Signorini
 {
@@ -32,18 +35,26 @@ namespace Signorini
       template <int dim, typename Number>
       Number
       face_term(const std::array<std::array<Number, dim>, IndicatorFace<dim>::n_points> &p,
-                const double stretch)
+                const std::array<double, IndicatorFace<dim>::n_face_vertices> &stretch,
+                const double apex_depth,
+                double      *depth = nullptr)
       {
         constexpr unsigned int nf = IndicatorFace<dim>::n_face_vertices;
-        // Apex: mean of the opposite face's vertices.
+        // Apex: from the face's centroid towards the opposite face's
+        // centroid, the fraction apex_depth of the way.
         std::array<Number, dim> apex;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            apex[d] = 0.;
+            Number face_mean = 0., opposite_mean = 0.;
             for (unsigned int v = 0; v < nf; ++v)
-              apex[d] += p[1 + nf + v][d];
-            apex[d] /= double(nf);
+              {
+                face_mean += p[1 + v][d];
+                opposite_mean += p[1 + nf + v][d];
+              }
+            apex[d] = (face_mean + apex_depth * (opposite_mean - face_mean)) / double(nf);
           }
+        if (depth)
+          *depth = -1.;
 
         // The simplices' bases: 2D one segment, 3D two triangles.
         constexpr unsigned int n_simplices = (dim == 2 ? 1 : 2);
@@ -63,7 +74,7 @@ namespace Signorini
               }
             for (unsigned int v = 0; v < dim; ++v)
               for (unsigned int d = 0; d < dim; ++d)
-                base[v][d] = centroid[d] + (1. + 2. * stretch) *
+                base[v][d] = centroid[d] + (1. + 2. * stretch[corners[t][v]]) *
                                              (p[1 + corners[t][v]][d] - centroid[d]);
 
             // xi = M^-1 (x - A), M = [base_v - A].
@@ -110,6 +121,38 @@ namespace Signorini
               }
             term *= cube_positive(last);
             total += term;
+            if constexpr (std::is_same_v<Number, double>)
+              if (depth && term > 0.)
+                {
+                  // Distance to the base plane: the apex's barycentric
+                  // coordinate times the apex's height over the base,
+                  // |det M| / measure of the base (2D: its length, 3D:
+                  // twice its area).
+                  Tensor<1, dim> e1, e2;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      e1[d] = base[1][d] - base[0][d];
+                      if (dim == 3)
+                        e2[d] = base[dim - 1][d] - base[0][d];
+                    }
+                  double det = 0., measure = 0.;
+                  if constexpr (dim == 2)
+                    {
+                      det     = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+                      measure = e1.norm();
+                    }
+                  else
+                    {
+                      Tensor<2, dim> m;
+                      for (unsigned int i = 0; i < dim; ++i)
+                        for (unsigned int j = 0; j < dim; ++j)
+                          m[i][j] = M[i][j];
+                      det     = determinant(m);
+                      measure = cross_product_3d(e1, e2).norm();
+                    }
+                  const double d_t = last * std::abs(det) / measure;
+                  *depth = (*depth < 0. ? d_t : std::min(*depth, d_t));
+                }
           }
         return total;
       }
@@ -134,10 +177,36 @@ namespace Signorini
     } // namespace
 
     template <int dim>
-    double
-    IndicatorFace<dim>::value(const Point<dim> &x, const double stretch) const
+    std::array<double, IndicatorFace<dim>::n_face_vertices>
+    IndicatorFace<dim>::stretches(const double stretch) const
     {
-      return face_term<dim, double>(gather<dim, double>(*this, x), stretch);
+      std::array<double, n_face_vertices> s;
+      for (unsigned int v = 0; v < n_face_vertices; ++v)
+        s[v] = (end_stretch[v] >= 0. ? end_stretch[v] : stretch);
+      return s;
+    }
+
+    template <int dim>
+    double
+    IndicatorFace<dim>::value(const Point<dim> &x,
+                              const double      stretch,
+                              const double      apex_depth) const
+    {
+      return face_term<dim, double>(gather<dim, double>(*this, x),
+                                    stretches(stretch),
+                                    apex_depth);
+    }
+
+    template <int dim>
+    double
+    IndicatorFace<dim>::depth(const Point<dim> &x,
+                              const double      stretch,
+                              const double      apex_depth) const
+    {
+      double d = -1.;
+      face_term<dim, double>(gather<dim, double>(*this, x), stretches(stretch),
+                             apex_depth, &d);
+      return d;
     }
 
     template <int dim>
@@ -145,7 +214,8 @@ namespace Signorini
     IndicatorFace<dim>::derivatives(const Point<dim>  &x,
                                     const double        stretch,
                                     Vector<double>     &gradient,
-                                    FullMatrix<double> &hessian) const
+                                    FullMatrix<double> &hessian,
+                                    const double        apex_depth) const
     {
       using Inner = Sacado::Fad::DFad<double>;
       using Outer = Sacado::Fad::DFad<Inner>;
@@ -158,7 +228,7 @@ namespace Signorini
             Inner              inner(n_variables, i, values[k][d]);
             p[k][d] = Outer(n_variables, i, inner);
           }
-      const Outer result = face_term<dim, Outer>(p, stretch);
+      const Outer result = face_term<dim, Outer>(p, stretches(stretch), apex_depth);
       gradient.reinit(n_variables);
       hessian.reinit(n_variables, n_variables);
       if (result.size() == 0) // a constant zero: no variable entered
@@ -174,12 +244,65 @@ namespace Signorini
     }
 
     template <int dim>
+    bool
+    IndicatorFace<dim>::in_cell(const Point<dim> &x) const
+    {
+      constexpr unsigned int nf = n_face_vertices;
+      Point<dim>             centroid;
+      double                 size = 0.;
+      for (unsigned int v = 0; v < nf; ++v)
+        {
+          centroid += (face[v] + opposite[v]) / (2. * nf);
+          size = std::max(size, face[v].distance(opposite[v]));
+        }
+      // Each side as (point, normal), the normal oriented away from the
+      // centroid.
+      // The face itself is outside (a point on the contact surface has
+      // not penetrated); the other sides belong to the cell (a point on
+      // a symmetry plane through the cell's side is inside).
+      auto outside = [&](const Point<dim> &p, Tensor<1, dim> n, const bool base) {
+        n /= n.norm();
+        if ((centroid - p) * n > 0.)
+          n = -n;
+        return base ? (x - p) * n > -1e-10 * size : (x - p) * n > 1e-10 * size;
+      };
+      if constexpr (dim == 2)
+        {
+          const std::array<Point<dim>, 4> polygon = {
+            {face[0], face[1], opposite[1], opposite[0]}};
+          for (unsigned int i = 0; i < 4; ++i)
+            {
+              const Tensor<1, dim> e = polygon[(i + 1) % 4] - polygon[i];
+              if (outside(polygon[i], Tensor<1, dim>({-e[1], e[0]}), i == 0))
+                return false;
+            }
+          return true;
+        }
+      else
+        {
+          std::vector<std::array<Point<dim>, 3>> sides = {
+            {{face[0], face[1], face[2]}}, {{opposite[0], opposite[1], opposite[2]}}};
+          for (unsigned int v = 0; v < nf; ++v)
+            sides.push_back({{face[v], face[(v + 1) % nf], opposite[v]}});
+          for (unsigned int i = 0; i < sides.size(); ++i)
+            if (outside(sides[i][0],
+                        cross_product_3d(sides[i][1] - sides[i][0],
+                                         sides[i][2] - sides[i][0]),
+                        i == 0))
+              return false;
+          return true;
+        }
+    }
+
+    template <int dim>
     BoundingBox<dim>
-    IndicatorFace<dim>::bounding_box(const double stretch) const
+    IndicatorFace<dim>::bounding_box(const double stretch,
+                                     const double apex_depth) const
     {
       Point<dim> apex;
-      for (const auto &q : opposite)
-        apex += q / double(n_face_vertices);
+      for (unsigned int v = 0; v < n_face_vertices; ++v)
+        apex += ((1. - apex_depth) * face[v] + apex_depth * opposite[v]) /
+                double(n_face_vertices);
       // A stretched base vertex V + 2s (V - G_t) (G_t a centroid of face
       // vertices) moves by at most 2s times the faces' extent in each
       // coordinate.
@@ -191,9 +314,19 @@ namespace Signorini
             face_upper[d] = std::max(face_upper[d], q[d]);
           }
       Point<dim> lower = apex, upper = apex;
+      // The cell's opposite vertices too, for in_cell() queries.
+      for (const auto &q : opposite)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], q[d]);
+            upper[d] = std::max(upper[d], q[d]);
+          }
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double grow = 2. * stretch * (face_upper[d] - face_lower[d]);
+          double largest = 0.;
+          for (const double s : stretches(stretch))
+            largest = std::max(largest, s);
+          const double grow = 2. * largest * (face_upper[d] - face_lower[d]);
           lower[d] = std::min(lower[d], face_lower[d] - grow);
           upper[d] = std::max(upper[d], face_upper[d] + grow);
         }

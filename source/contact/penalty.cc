@@ -16,9 +16,21 @@ namespace Signorini
                                     VectorType                      *rhs,
                                     MatrixType                      *hessian)
     {
+      if (hessian && contact.needs_new_pattern(u))
+        {
+          AssertThrow(rebuild_pattern,
+                      ExcMessage("the contact couplings changed and no "
+                                 "sparsity pattern builder was given"));
+          rebuild_pattern(u);
+        }
       Evaluation e = energy.evaluate(u, time, constraints, rhs, hessian);
       if (!e.admissible)
         return e;
+      if (!contact.admissible(u))
+        {
+          e.admissible = false;
+          return e;
+        }
       const double penalty = contact.add_penalty(u, mu, constraints, rhs, hessian);
       e.value += penalty;
       if (!std::isfinite(e.value))
@@ -104,7 +116,7 @@ namespace Signorini
     penalty_continuation(const ContinuationParameters    &parameters,
                          NewtonMinimizer                 &newton,
                          const EnergyFunctional<dim>     &energy,
-                         const RigidFoundation<dim>      &contact,
+                         PenaltyTerm<dim>                &contact,
                          const double                     time,
                          const double                     mu_start,
                          const AffineConstraints<double> &constraints,
@@ -112,7 +124,9 @@ namespace Signorini
                          VectorType                      &ghosted,
                          MatrixType                      &hessian,
                          VectorType                      &rhs,
-                         ConditionalOStream              &progress)
+                         ConditionalOStream              &progress,
+                         const typename PenaltyObjective<dim>::PatternBuilder
+                           &rebuild_pattern)
     {
       ContinuationResult result;
       double             mu = mu_start;
@@ -135,7 +149,7 @@ namespace Signorini
                   start.add(factor, u);
                   start.add(-factor, previous);
                   ghosted = start;
-                  PenaltyObjective<dim> check(energy, contact, time, mu);
+                  PenaltyObjective<dim> check(energy, contact, time, mu, rebuild_pattern);
                   if (!check.evaluate(ghosted, constraints, nullptr, nullptr)
                          .admissible)
                     start = u;
@@ -147,14 +161,14 @@ namespace Signorini
           progress << "  stage " << s + 1 << ": mu = " << std::scientific
                    << std::setprecision(3) << mu << std::defaultfloat
                    << std::endl;
-          PenaltyObjective<dim> objective(energy, contact, time, mu);
+          PenaltyObjective<dim> objective(energy, contact, time, mu, rebuild_pattern);
           result.last = newton.minimize(objective, constraints, u, ghosted,
                                         hessian, rhs);
           result.newton_iterations += result.last.iterations;
           ghosted = u;
           contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
                               &result.forces);
-          const auto summary = contact.summarize(ghosted, result.forces);
+          const auto summary = contact.measure(ghosted, result.forces);
           result.stages.push_back(
             {mu, result.last.iterations, summary.max_penetration_ratio});
           progress << "    penetration / h = " << std::scientific
@@ -193,16 +207,18 @@ namespace Signorini
     template ContinuationResult
     penalty_continuation<2>(const ContinuationParameters &, NewtonMinimizer &,
                             const EnergyFunctional<2> &,
-                            const RigidFoundation<2> &, const double,
+                            PenaltyTerm<2> &, const double,
                             const double, const AffineConstraints<double> &,
                             VectorType &, VectorType &, MatrixType &,
-                            VectorType &, ConditionalOStream &);
+                            VectorType &, ConditionalOStream &,
+                            const PenaltyObjective<2>::PatternBuilder &);
     template ContinuationResult
     penalty_continuation<3>(const ContinuationParameters &, NewtonMinimizer &,
                             const EnergyFunctional<3> &,
-                            const RigidFoundation<3> &, const double,
+                            PenaltyTerm<3> &, const double,
                             const double, const AffineConstraints<double> &,
                             VectorType &, VectorType &, MatrixType &,
-                            VectorType &, ConditionalOStream &);
+                            VectorType &, ConditionalOStream &,
+                            const PenaltyObjective<3>::PatternBuilder &);
   } // namespace Contact
 } // namespace Signorini

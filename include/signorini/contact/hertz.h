@@ -35,6 +35,7 @@ namespace Signorini
       double tolerance_a       = 0.;
       double tolerance_p0      = 0.;
       double tolerance_force   = 0.;
+      bool   p0_from_fit       = false; // else: the node nearest the axis
 
       bool
       active() const

@@ -21,7 +21,9 @@ namespace Signorini
      * - 2D: the face [B, C] is stretched along its own line to
      *   B' = B - s (C - B), C' = C + s (C - B) (s = 'stretch', 0.12 in the
      *   poster's figure), and the apex A is the midpoint of the cell's
-     *   opposite face [D, E]. One triangle (A, B', C').
+     *   opposite face [D, E] (or, with an apex depth theta < 1, the point
+     *   theta of the way from the face's midpoint to it). One triangle
+     *   (A, B', C').
      * - 3D: the quad face Q0 Q1 Q2 Q3 is split along Q0-Q2 into two
      *   triangles, each scaled about its centroid by 1 + 2s, and the apex
      *   is the centroid of the opposite face. Two tetrahedra.
@@ -43,6 +45,15 @@ namespace Signorini
     template <int dim>
     struct IndicatorFace
     {
+      static constexpr std::array<double, (dim == 2 ? 2 : 4)>
+      make_negative()
+      {
+        std::array<double, (dim == 2 ? 2 : 4)> a{};
+        for (auto &x : a)
+          x = -1.;
+        return a;
+      }
+
       static constexpr unsigned int n_face_vertices = (dim == 2 ? 2 : 4);
       static constexpr unsigned int n_points  = 1 + 2 * n_face_vertices;
       static constexpr unsigned int n_variables = dim * n_points;
@@ -52,9 +63,28 @@ namespace Signorini
       std::array<Point<dim>, n_face_vertices> face;
       std::array<Point<dim>, n_face_vertices> opposite;
 
-      /// Sum of the face's simplex terms F_T at x.
+      /// Per face vertex: if >= 0, the stretch used at this vertex instead
+      /// of the common one (for the free ends of a contact surface, e.g.
+      /// on a symmetry plane, where no neighbouring face overlaps).
+      std::array<double, n_face_vertices> end_stretch = make_negative();
+
+      /// Sum of the face's simplex terms F_T at x. The apex lies the
+      /// fraction @p apex_depth of the way from the face's centroid to the
+      /// opposite face's centroid (1: on the opposite face).
       double
-      value(const Point<dim> &x, const double stretch) const;
+      value(const Point<dim> &x,
+            const double      stretch,
+            const double      apex_depth = 1.) const;
+
+      /**
+       * Penetration depth of x: its smallest distance to the base plane
+       * of a simplex that contains it (where the simplex's term is > 0),
+       * or -1 if no simplex of the face contains x.
+       */
+      double
+      depth(const Point<dim> &x,
+            const double      stretch,
+            const double      apex_depth = 1.) const;
 
       /**
        * Value, gradient and Hessian with respect to the n_variables
@@ -65,11 +95,25 @@ namespace Signorini
       derivatives(const Point<dim>  &x,
                   const double        stretch,
                   Vector<double>     &gradient,
-                  FullMatrix<double> &hessian) const;
+                  FullMatrix<double> &hessian,
+                  const double        apex_depth = 1.) const;
 
-      /// A box containing every point where the face's terms are > 0.
+      /**
+       * Whether x lies strictly inside the cell spanned by the face and
+       * the opposite face (sides taken as the planes through three of
+       * their vertices: exact in 2D, for nearly flat faces in 3D).
+       */
+      bool
+      in_cell(const Point<dim> &x) const;
+
+      /// The stretch at each face vertex.
+      std::array<double, n_face_vertices>
+      stretches(const double stretch) const;
+
+      /// A box containing the cell and every point where the face's
+      /// terms are > 0.
       BoundingBox<dim>
-      bounding_box(const double stretch) const;
+      bounding_box(const double stretch, const double apex_depth = 1.) const;
     };
   } // namespace Contact
 } // namespace Signorini

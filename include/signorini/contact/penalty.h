@@ -1,12 +1,13 @@
 #pragma once
 
-#include <signorini/contact/rigid_foundation.h>
 #include <signorini/energy_functional.h>
 #include <signorini/newton.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,21 +16,97 @@ namespace Signorini
   namespace Contact
   {
     /**
-     * The penalised energy G_mu(U) = E(U) + mu/3 sum_k w_k <-g_k(U)>^3 of
-     * formulation.md section 2, as a Newton objective (C^2 in U).
+     * A contact model that enters the energy as a penalty term mu P(U)
+     * (C^2 in U): the rigid foundation's mu/3 sum_k w_k <-g_k>^3 or the
+     * two-body indicator term mu sum_i w_i Phi(x_i). This is all the
+     * penalty continuation needs to know of it.
+     */
+    template <int dim>
+    class PenaltyTerm
+    {
+    public:
+      virtual ~PenaltyTerm() = default;
+
+      /**
+       * Add mu P(u) and, if given, minus its gradient to @p rhs and its
+       * Hessian to @p hessian (condensed with @p constraints, then
+       * compressed: collective). Returns mu P summed over all ranks. If
+       * @p forces is given it receives the model's nodal contact forces
+       * (the record that measure() and the output read).
+       */
+      virtual double
+      add_penalty(const VectorType                &u,
+                  const double                     mu,
+                  const AffineConstraints<double> &constraints,
+                  VectorType                      *rhs,
+                  MatrixType                      *hessian,
+                  std::vector<double>             *forces = nullptr) const = 0;
+
+      struct Measure
+      {
+        double       max_penetration_ratio = 0.; // penetration over h
+        unsigned int n_active              = 0;
+      };
+
+      /// Largest penetration over the local mesh size, and the number of
+      /// active contact nodes, of the state @p u with nodal @p forces.
+      virtual Measure
+      measure(const VectorType &u, const std::vector<double> &forces) const = 0;
+
+      /**
+       * Called before an evaluation with a Hessian at the ghosted @p u:
+       * true if the couplings the term needs at @p u are not all in the
+       * pairs the matrix's sparsity pattern was built for (collective).
+       */
+      virtual bool
+      needs_new_pattern(const VectorType &u)
+      {
+        (void)u;
+        return false;
+      }
+
+      /// Whether the state @p u is one the model can represent (collective).
+      virtual bool
+      admissible(const VectorType &u) const
+      {
+        (void)u;
+        return true;
+      }
+
+      /// Largest step length along the direction @p d (locally owned)
+      /// from the ghosted @p u that the model allows (collective).
+      virtual double
+      max_step(const VectorType &u, const VectorType &d) const
+      {
+        (void)u;
+        (void)d;
+        return std::numeric_limits<double>::infinity();
+      }
+    };
+
+    /**
+     * The penalised energy G_mu(U) = E(U) + mu P(U) of formulation.md
+     * sections 2 and 4, as a Newton objective. If the contact term asks
+     * for a new sparsity pattern before a Hessian is assembled,
+     * @p rebuild_pattern is called with the state first (it must
+     * re-initialise the matrix that evaluate() receives).
      */
     template <int dim>
     class PenaltyObjective : public Objective
     {
     public:
+      using PatternBuilder = std::function<void(const VectorType &)>;
+
       PenaltyObjective(const EnergyFunctional<dim> &energy,
-                       const RigidFoundation<dim>  &contact,
+                       PenaltyTerm<dim>            &contact,
                        const double                 time,
-                       const double                 mu)
+                       const double                 mu,
+                       const PatternBuilder        &rebuild_pattern = {})
         : energy(energy)
         , contact(contact)
         , time(time)
         , mu(mu)
+        , rebuild_pattern(rebuild_pattern)
       {}
 
       Evaluation
@@ -38,18 +115,25 @@ namespace Signorini
                VectorType                      *rhs,
                MatrixType                      *hessian) override;
 
+      double
+      max_step(const VectorType &u, const VectorType &d) override
+      {
+        return contact.max_step(u, d);
+      }
+
     private:
       const EnergyFunctional<dim> &energy;
-      const RigidFoundation<dim>  &contact;
+      PenaltyTerm<dim>            &contact;
       const double                 time;
       const double                 mu;
+      PatternBuilder               rebuild_pattern;
     };
 
     /**
      * Penalty continuation (formulation.md section 4): minimise G_mu_k
      * for mu_0 < mu_1 < ... with Newton, each stage warm-started from the
-     * last, until the largest penetration over the local mesh size,
-     * max_k <-g_k>/|grad g_k| / h_k, is at most the tolerance.
+     * last, until the largest penetration over the local mesh size (the
+     * contact model's measure()) is at most the tolerance.
      *
      * Scale-free choices: mu_0 = c_0 E / h^2 (E the largest small-strain
      * Young's modulus of the bodies, h the smallest contact mesh size), for
@@ -103,7 +187,7 @@ namespace Signorini
     penalty_continuation(const ContinuationParameters    &parameters,
                          NewtonMinimizer                 &newton,
                          const EnergyFunctional<dim>     &energy,
-                         const RigidFoundation<dim>      &contact,
+                         PenaltyTerm<dim>                &contact,
                          const double                     time,
                          const double                     mu_start,
                          const AffineConstraints<double> &constraints,
@@ -111,6 +195,8 @@ namespace Signorini
                          VectorType                      &ghosted,
                          MatrixType                      &hessian,
                          VectorType                      &rhs,
-                         ConditionalOStream              &progress);
+                         ConditionalOStream              &progress,
+                         const typename PenaltyObjective<dim>::PatternBuilder
+                           &rebuild_pattern = {});
   } // namespace Contact
 } // namespace Signorini

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/foundation.h>
+#include <signorini/contact/penalty.h>
 #include <signorini/types.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -45,17 +47,10 @@ namespace Signorini
      * active set, total force, the CSV profile and the Hertz quantities.
      */
     template <int dim>
-    class RigidFoundation
+    class RigidFoundation : public PenaltyTerm<dim>
     {
     public:
-      struct Node
-      {
-        std::array<types::global_dof_index, dim> dofs;
-        Point<dim>              X;      // reference position
-        double                  weight; // int phi_k ds
-        double                  h;      // local mesh size
-        types::global_dof_index scalar_dof; // in the output DoFHandler
-      };
+      using Node = BoundaryNode<dim>;
 
       struct State
       {
@@ -95,27 +90,27 @@ namespace Signorini
       const std::vector<Node> &
       nodes() const
       {
-        return contact_nodes;
+        return boundary.nodes();
       }
 
       unsigned int
       n_global_nodes() const
       {
-        return n_global;
+        return boundary.n_global();
       }
 
       /// Mean h_k over all nodes, the scale of penalty parameters.
       double
       mean_mesh_size() const
       {
-        return mean_h;
+        return boundary.mean_mesh_size();
       }
 
       /// Smallest h_k: the finest contact resolution.
       double
       min_mesh_size() const
       {
-        return min_h;
+        return boundary.min_mesh_size();
       }
 
       const Foundation<dim> &
@@ -147,7 +142,14 @@ namespace Signorini
                   const AffineConstraints<double> &constraints,
                   VectorType                      *rhs,
                   MatrixType                      *hessian,
-                  std::vector<double>             *forces = nullptr) const;
+                  std::vector<double>             *forces = nullptr) const override;
+
+      typename PenaltyTerm<dim>::Measure
+      measure(const VectorType &u, const std::vector<double> &forces) const override
+      {
+        const Summary s = summarize(u, forces);
+        return {s.max_penetration_ratio, s.n_active};
+      }
 
       /// Penetration and forces of the state @p u with nodal forces
       /// @p forces (one per owned node).
@@ -198,19 +200,16 @@ namespace Signorini
       double
       active_threshold(const std::vector<double> &forces) const;
 
+      const std::vector<Node> &
+      contact_nodes() const
+      {
+        return boundary.nodes();
+      }
+
       std::unique_ptr<Foundation<dim>> surface;
       types::boundary_id               contact_boundary;
       const DoFHandler<dim>           &dof_handler;
-      const Mapping<dim>              &mapping;
-      std::vector<Node>                contact_nodes;
-      unsigned int                     n_global = 0;
-      double                           mean_h   = 0.;
-      double                           min_h    = 0.;
-
-      // Nodal output fields on a scalar FE_Q of the displacement's degree.
-      std::unique_ptr<FE_Q<dim>> scalar_fe;
-      DoFHandler<dim>            scalar_dof_handler;
-      VectorType                 pressure_field, gap_field, active_field;
+      BoundaryNodes<dim>               boundary;
     };
   } // namespace Contact
 } // namespace Signorini

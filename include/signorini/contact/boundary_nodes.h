@@ -1,0 +1,111 @@
+#pragma once
+
+#include <signorini/types.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  namespace Contact
+  {
+    /**
+     * A degree-of-freedom support point on a contact boundary: its dim
+     * displacement DoFs, reference position, tributary weight
+     * w = int_Gamma phi ds (reference configuration), local mesh size h
+     * (mean diameter of the boundary faces at the node) and its DoF in
+     * the scalar output space.
+     */
+    template <int dim>
+    struct BoundaryNode
+    {
+      std::array<types::global_dof_index, dim> dofs;
+      Point<dim>                               X;
+      double                                   weight;
+      double                                   h;
+      types::global_dof_index                  scalar_dof;
+    };
+
+    /**
+     * The support points of the boundary faces with the given ids, and
+     * nodal output fields on them. Each MPI rank holds the nodes whose
+     * DoFs it owns; nodes whose DoFs are hanging are left out (they follow
+     * their parents). Used by both contact models for their nodes, their
+     * VTU fields and their CSV profiles.
+     */
+    template <int dim>
+    class BoundaryNodes
+    {
+    public:
+      BoundaryNodes(const DoFHandler<dim> &dof_handler, const Mapping<dim> &mapping);
+
+      /// Collect the nodes (call after the DoFs are distributed).
+      void
+      setup(const std::set<types::boundary_id> &boundary_ids,
+            const AffineConstraints<double>    &hanging_constraints);
+
+      const std::vector<BoundaryNode<dim>> &
+      nodes() const
+      {
+        return node_list;
+      }
+      unsigned int
+      n_global() const
+      {
+        return n_global_nodes;
+      }
+      double
+      mean_mesh_size() const
+      {
+        return mean_h;
+      }
+      double
+      min_mesh_size() const
+      {
+        return min_h;
+      }
+
+      /**
+       * Add nodal scalar fields (one value per owned node for each name)
+       * to @p data_out; the vectors live in this object until the next
+       * call.
+       */
+      void
+      add_fields(DataOut<dim>                           &data_out,
+                 const std::vector<std::string>          &names,
+                 const std::vector<std::vector<double>> &values);
+
+      /**
+       * Gather @p rows (one per owned node) on rank 0, sort them and
+       * write them as CSV under @p header (collective).
+       */
+      void
+      write_csv(const std::string                      &file,
+                const std::string                      &header,
+                const std::vector<std::vector<double>> &rows) const;
+
+    private:
+      const DoFHandler<dim>         &dof_handler;
+      const Mapping<dim>            &mapping;
+      std::vector<BoundaryNode<dim>> node_list;
+      unsigned int                   n_global_nodes = 0;
+      double                         mean_h         = 0.;
+      double                         min_h          = 0.;
+
+      std::unique_ptr<FE_Q<dim>> scalar_fe;
+      DoFHandler<dim>            scalar_dof_handler;
+      std::vector<VectorType>    fields;
+    };
+  } // namespace Contact
+} // namespace Signorini

@@ -1,0 +1,322 @@
+#pragma once
+
+#include <signorini/contact/boundary_nodes.h>
+#include <signorini/contact/indicator.h>
+#include <signorini/contact/penalty.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <functional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    /// The "Contact > Two bodies" subsection.
+    struct TwoBodyParameters
+    {
+      types::boundary_id target_boundary = 0;
+      bool               integral        = false;
+      unsigned int       gauss_points    = 2;
+      double             stretch         = 0.12;
+      double             apex_depth      = 1.;
+      double             search_margin   = 1.;
+      double             max_motion      = 0.5;
+      double             end_stretch     = 1.;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * Frictionless contact between two deformable bodies through the
+     * smooth indicator function Phi of body 2 (formulation.md sections
+     * 3-4): body 1's contact boundary Gamma_C ('Contact boundary id') must
+     * stay out of body 2, whose potential contact surface is 'Target
+     * boundary id'. The penalty term is
+     *
+     *   nodal:    P(U) = sum_i w_i Phi(x_i),   x_i the support points of
+     *             Gamma_C (w_i their tributary lengths/areas),
+     *   integral: P(U) = int_Gamma_C Phi(X + u) ds, with K Gauss points per
+     *             face in the reference configuration,
+     *
+     * so that both forms approximate the same integral and mu has the same
+     * meaning (units: energy per length^(dim-1)). Phi is the sum over body
+     * 2's contact faces of IndicatorFace terms built from the current
+     * positions of each face's vertices and of the opposite face's
+     * vertices, so a pair term depends on the body 1 point (through u1)
+     * and on 2^dim vertices of body 2 (through u2); its gradient and
+     * Hessian, coupled blocks included, come from IndicatorFace's
+     * automatic differentiation and the chain rule through the shape
+     * functions.
+     *
+     * Broad phase: the boxes of body 2's face terms, at the current
+     * positions, go into an R-tree (boost geometry through deal.II's
+     * pack_rtree); a point is evaluated only against the faces whose box
+     * contains it. Every rank holds the current vertex positions of all
+     * of body 2's contact faces (gathered at each evaluation: a few
+     * numbers per face) and evaluates the points it owns.
+     *
+     * Sparsity: the matrix holds the couplings of the pairs found with
+     * boxes enlarged by 'Search margin' face sizes. Before a Hessian is
+     * assembled, needs_new_pattern() checks that every pair with Phi > 0
+     * is among them; if not, the caller rebuilds the pattern
+     * (add_sparsity()) at the current state.
+     *
+     * Penetration is the distance of a Gamma_C point inside body 2 (to the
+     * base plane of the simplex that contains it), over the size of that
+     * face of body 2. Contact forces on body 1 are minus the gradient of
+     * mu P with respect to its DoFs; the pressure of a node is the size of
+     * its force over its tributary weight.
+     */
+    template <int dim>
+    class TwoBodyContact : public PenaltyTerm<dim>
+    {
+    public:
+      /// What the broad phase did, for summary.json.
+      struct PairStatistics
+      {
+        unsigned int       target_faces       = 0; // body 2 faces on Gamma
+        unsigned int       points             = 0; // body 1 points (all ranks)
+        unsigned long long last_pairs         = 0; // evaluated, last call
+        unsigned long long max_pairs          = 0; // evaluated, largest
+        unsigned long long pattern_pairs      = 0; // in the sparsity pattern
+        unsigned int       pattern_builds     = 0;
+      };
+
+      struct Summary
+      {
+        unsigned int   n_nodes  = 0;
+        unsigned int   n_active = 0;
+        Tensor<1, dim> total_force; // of body 2 on body 1
+        double         max_penetration_ratio = 0.;
+        double         max_pressure          = 0.;
+      };
+
+      TwoBodyContact(const TwoBodyParameters &parameters,
+                     const types::boundary_id contact_boundary,
+                     const DoFHandler<dim>   &dof_handler,
+                     const Mapping<dim>      &mapping);
+
+      /**
+       * Collect body 1's nodes and evaluation points and body 2's faces
+       * (call after the DoFs are distributed). @p constraints (hanging
+       * nodes and Dirichlet data) tells which of body 2's DoFs are
+       * constrained and on which DoFs they depend. Throws InputError if
+       * either boundary is empty or both lie on one body.
+       */
+      void
+      setup(const AffineConstraints<double> &hanging_constraints,
+            const AffineConstraints<double> &constraints);
+
+      /// Rows beyond the locally relevant ones that this rank's pairs may
+      /// write to: the sparsity pattern's extra writable rows.
+      const IndexSet &
+      coupled_rows() const
+      {
+        return extra_rows;
+      }
+
+      /**
+       * Find the pairs at the ghosted state @p u with the enlarged boxes
+       * and add their couplings, condensed with @p constraints, to
+       * @p sparsity (collective).
+       */
+      void
+      add_sparsity(TrilinosWrappers::SparsityPattern &sparsity,
+                   const AffineConstraints<double>   &constraints,
+                   const VectorType                  &u);
+
+      double
+      add_penalty(const VectorType                &u,
+                  const double                     mu,
+                  const AffineConstraints<double> &constraints,
+                  VectorType                      *rhs,
+                  MatrixType                      *hessian,
+                  std::vector<double>             *forces = nullptr) const override;
+
+      typename PenaltyTerm<dim>::Measure
+      measure(const VectorType &u, const std::vector<double> &forces) const override;
+
+      bool
+      needs_new_pattern(const VectorType &u) override;
+
+      /**
+       * Phi is positive only in a layer of depth apex depth x cell depth
+       * inside body 2: a point that crosses the layer within one step
+       * feels nothing and tunnels through. The step is limited so that no
+       * point of Gamma_C and no vertex of body 2's contact faces moves by
+       * more than 'Maximum motion' times the thinnest layer.
+       */
+      double
+      max_step(const VectorType &u, const VectorType &d) const override;
+
+      /**
+       * False if a point of Gamma_C lies inside one of body 2's contact
+       * cells where Phi = 0: it has passed through the layer where the
+       * penalty acts (under a vertex the layer is only about
+       * s/(s + 1/2) of the cell deep), and the penalty would let it go.
+       * The line search then backtracks.
+       */
+      bool
+      admissible(const VectorType &u) const override;
+
+      /// Nodes of Gamma_C; the force record holds dim numbers per node.
+      const std::vector<BoundaryNode<dim>> &
+      nodes() const
+      {
+        return boundary.nodes();
+      }
+      unsigned int
+      n_global_nodes() const
+      {
+        return boundary.n_global();
+      }
+      /// Smallest size of a body 2 contact face: the penalty scale.
+      double
+      min_mesh_size() const
+      {
+        return min_face_size;
+      }
+      double
+      mean_mesh_size() const
+      {
+        return mean_face_size;
+      }
+      types::boundary_id
+      boundary_id() const
+      {
+        return contact_boundary;
+      }
+      const TwoBodyParameters &
+      parameters() const
+      {
+        return prm;
+      }
+      const PairStatistics &
+      pair_statistics() const
+      {
+        return stats;
+      }
+
+      Summary
+      summarize(const VectorType &u, const std::vector<double> &forces) const;
+
+      /// (current position, pressure) of the nodes with a force, on every
+      /// rank, sorted by position.
+      std::vector<std::pair<Point<dim>, double>>
+      gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
+
+      void
+      write_profile(const std::string                               &file,
+                    const VectorType                                &u,
+                    const std::vector<double>                       &forces,
+                    const std::function<double(const Point<dim> &)> &reference_pressure) const;
+
+      /// contact_pressure, contact_penetration and contact_active fields.
+      void
+      add_output_fields(DataOut<dim>              &data_out,
+                        const VectorType          &u,
+                        const std::vector<double> &forces);
+
+    private:
+      static constexpr unsigned int n_face_vertices =
+        IndicatorFace<dim>::n_face_vertices;
+      static constexpr unsigned int n_target_dofs =
+        IndicatorFace<dim>::n_variables - dim;
+
+      /// A point of Gamma_C where Phi is evaluated: x = X + sum_j
+      /// shape_j u_j e_{component_j}.
+      struct Point1
+      {
+        std::vector<types::global_dof_index> dofs;
+        std::vector<unsigned int>            components;
+        std::vector<double>                  shape;
+        Point<dim>                           X;
+        double                               weight;
+      };
+
+      /// A face of body 2's contact surface: the DoFs of its vertices and
+      /// of the opposite face's (vertex by vertex, component by component,
+      /// in IndicatorFace's order) and their reference positions.
+      struct Face2
+      {
+        std::array<types::global_dof_index, n_target_dofs> dofs;
+        std::array<double, n_target_dofs>                  X;
+        double                                             h;
+        std::array<double, n_face_vertices> end_stretch; // -1: common
+
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          for (unsigned int k = 0; k < n_target_dofs; ++k)
+            ar &dofs[k] & X[k];
+          ar &h;
+        }
+      };
+
+      Point<dim>
+      position(const Point1 &p, const VectorType &u) const;
+
+      /// Current face geometry of every body 2 face (collective).
+      std::vector<IndicatorFace<dim>>
+      current_faces(const VectorType &u) const;
+
+      /// Pairs (point, face) whose face box, grown by @p margin face
+      /// sizes, contains the point; with @p positive_only only those
+      /// where Phi's face term is > 0.
+      std::vector<std::pair<unsigned int, unsigned int>>
+      find_pairs(const std::vector<Point1>            &points,
+                 const VectorType                     &u,
+                 const std::vector<IndicatorFace<dim>> &faces,
+                 const double                          margin,
+                 const bool                            positive_only) const;
+
+      /// Largest penetration over face size of the points @p x.
+      double
+      penetration_ratio(const std::vector<Point<dim>>         &x,
+                        const std::vector<IndicatorFace<dim>> &faces,
+                        std::vector<double>                   *depths = nullptr) const;
+
+      /// @p constraints, completed on several ranks with the lines of the
+      /// body 2 DoFs that other ranks own.
+      const AffineConstraints<double> &
+      assembly_constraints(const AffineConstraints<double> &constraints) const;
+
+      std::vector<double>
+      node_pressures(const std::vector<double> &forces) const;
+
+      TwoBodyParameters      prm;
+      types::boundary_id     contact_boundary;
+      const DoFHandler<dim> &dof_handler;
+      const Mapping<dim>    &mapping;
+      BoundaryNodes<dim>     boundary;
+
+      std::vector<Point1> points;     // owned evaluation points
+      std::vector<Point1> node_points; // owned nodes as points
+      std::vector<Face2>  faces2;     // all of body 2's faces, every rank
+      unsigned int        first_owned_face = 0, n_owned_faces = 0;
+      double              min_face_size = 0., mean_face_size = 0.;
+      double              min_layer = 0.; // thinnest layer where Phi > 0
+      IndexSet            relevant, extra_rows;
+
+      std::set<std::pair<unsigned int, unsigned int>> pattern;
+      mutable PairStatistics                          stats;
+      mutable AffineConstraints<double>               merged;
+    };
+  } // namespace Contact
+} // namespace Signorini

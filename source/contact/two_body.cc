@@ -1,0 +1,869 @@
+#include <signorini/contact/two_body.h>
+#include <signorini/input_error.h>
+
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <iostream>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    namespace bgi = boost::geometry::index;
+
+    void
+    TwoBodyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Target boundary id",
+                        "10",
+                        Patterns::Integer(0, 255),
+                        "The boundary id of body 2's potential contact "
+                        "surface, whose indicator function Phi body 1's "
+                        "'Contact boundary id' must keep at zero.");
+      prm.declare_entry("Contact form",
+                        "nodal",
+                        Patterns::Selection("nodal|integral"),
+                        "nodal: mu sum_i w_i Phi(x_i) over the support points "
+                        "of body 1's contact boundary (w_i: tributary "
+                        "length/area). integral: mu int_Gamma_C Phi(X + u) "
+                        "ds with 'Gauss points per face' points per "
+                        "direction on every face (reference configuration); "
+                        "it also catches body 2 vertices that poke through "
+                        "the middle of a body 1 face.");
+      prm.declare_entry("Gauss points per face",
+                        "2",
+                        Patterns::Integer(1, 10),
+                        "K: Gauss points per direction on each face of "
+                        "Gamma_C for the integral form.");
+      prm.declare_entry("Stretch",
+                        "0.12",
+                        Patterns::Double(0., 0.5),
+                        "s: each face's simplex base is stretched by s times "
+                        "its length beyond each end (3D: each triangle is "
+                        "scaled by 1 + 2s), so that the simplices of "
+                        "neighbouring faces overlap and Phi has no zero line "
+                        "under shared vertices [-]; in (0, 0.5).");
+      prm.declare_entry("End stretch",
+                        "1",
+                        Patterns::Double(0., 2.),
+                        "The stretch at the free ends of the target surface "
+                        "(2D: a vertex of one target face only, e.g. on a "
+                        "symmetry line; 3D: the vertices of an edge of one "
+                        "target face only), where no neighbouring simplex "
+                        "overlaps: with the common stretch, Phi under such a "
+                        "vertex is about 25 times weaker than mid-face and "
+                        "vanishes below 0.2 of the cell depth [-].");
+      prm.declare_entry("Apex depth",
+                        "1",
+                        Patterns::Double(0., 1.),
+                        "Apex rule: the simplex apex lies this fraction of "
+                        "the way from the face's centroid to the centroid of "
+                        "the cell's opposite face (1: on the opposite face) "
+                        "[-]; in (0, 1]. Phi > 0 in a layer this deep.");
+      prm.declare_entry("Search margin",
+                        "1",
+                        Patterns::Double(0.),
+                        "The sparsity pattern holds the (point, face) pairs "
+                        "whose face box grown by this many face sizes "
+                        "contains the point; it is rebuilt when a pair with "
+                        "Phi > 0 falls outside [-]; >= 0.");
+      prm.declare_entry("Maximum motion",
+                        "0.5",
+                        Patterns::Double(0.),
+                        "A Newton step moves no point of the contact "
+                        "boundary and no vertex of body 2's contact faces by "
+                        "more than this fraction of the thinnest layer where "
+                        "Phi > 0 (a point that crosses the layer in one step "
+                        "feels no force) [-]; > 0.");
+    }
+
+    void
+    TwoBodyParameters::parse_parameters(ParameterHandler &prm)
+    {
+      target_boundary = prm.get_integer("Target boundary id");
+      integral        = (prm.get("Contact form") == "integral");
+      gauss_points    = prm.get_integer("Gauss points per face");
+      stretch         = prm.get_double("Stretch");
+      apex_depth      = prm.get_double("Apex depth");
+      search_margin   = prm.get_double("Search margin");
+      max_motion      = prm.get_double("Maximum motion");
+      end_stretch     = prm.get_double("End stretch");
+      if (!(max_motion > 0.))
+        throw InputError("Contact > Two bodies > Maximum motion",
+                         "must be > 0, got " + prm.get("Maximum motion"));
+      if (!(stretch > 0.))
+        throw InputError("Contact > Two bodies > Stretch",
+                         "must be > 0 (with 0 Phi vanishes under the shared "
+                         "vertices), got " + prm.get("Stretch"));
+      if (!(apex_depth > 0.))
+        throw InputError("Contact > Two bodies > Apex depth",
+                         "must be > 0, got " + prm.get("Apex depth"));
+    }
+
+    template <int dim>
+    TwoBodyContact<dim>::TwoBodyContact(const TwoBodyParameters &parameters,
+                                        const types::boundary_id contact_boundary,
+                                        const DoFHandler<dim>   &dof_handler,
+                                        const Mapping<dim>      &mapping)
+      : prm(parameters)
+      , contact_boundary(contact_boundary)
+      , dof_handler(dof_handler)
+      , mapping(mapping)
+      , boundary(dof_handler, mapping)
+    {}
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::setup(const AffineConstraints<double> &hanging_constraints,
+                               const AffineConstraints<double> &constraints)
+    {
+      const MPI_Comm comm = dof_handler.get_communicator();
+      const auto    &fe   = dof_handler.get_fe();
+      relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
+      boundary.setup({contact_boundary}, hanging_constraints);
+
+      // Body 1's nodes as evaluation points (always: they carry the
+      // output), and the Gauss points of the integral form.
+      node_points.clear();
+      for (const auto &n : boundary.nodes())
+        {
+          Point1 p;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              p.dofs.push_back(n.dofs[c]);
+              p.components.push_back(c);
+              p.shape.push_back(1.);
+            }
+          p.X      = n.X;
+          p.weight = n.weight;
+          node_points.push_back(p);
+        }
+      std::set<types::material_id> body1, body2;
+      if (prm.integral)
+        {
+          points.clear();
+          FEFaceValues<dim> fe_face(mapping, fe, QGauss<dim - 1>(prm.gauss_points),
+                                    update_values | update_JxW_values |
+                                      update_quadrature_points);
+          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == contact_boundary)
+                  {
+                    fe_face.reinit(cell, f);
+                    cell->get_dof_indices(dofs);
+                    for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+                      {
+                        Point1 p;
+                        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                          if (fe.has_support_on_face(i, f))
+                            {
+                              p.dofs.push_back(dofs[i]);
+                              p.components.push_back(
+                                fe.system_to_component_index(i).first);
+                              p.shape.push_back(fe_face.shape_value(i, q));
+                            }
+                        p.X      = fe_face.quadrature_point(q);
+                        p.weight = fe_face.JxW(q);
+                        points.push_back(p);
+                      }
+                  }
+        }
+      else
+        points = node_points;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                if (cell->face(f)->boundary_id() == contact_boundary)
+                  body1.insert(cell->material_id());
+                if (cell->face(f)->boundary_id() == prm.target_boundary)
+                  body2.insert(cell->material_id());
+              }
+
+      // Body 2's faces: this rank's, then every rank's.
+      std::vector<Face2> owned_faces;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == prm.target_boundary)
+              {
+                // Face vertices in cyclic order, then the opposite face's
+                // vertices in the same order (vertex i of face f lies
+                // opposite vertex i of the opposite face).
+                const unsigned int fo = GeometryInfo<dim>::opposite_face[f];
+                const std::array<unsigned int, 4> cyclic = {{0, 1, 3, 2}};
+                Face2 face;
+                face.h = cell->face(f)->diameter();
+                for (unsigned int side = 0; side < 2; ++side)
+                  for (unsigned int v = 0; v < n_face_vertices; ++v)
+                    {
+                      const unsigned int lv = (dim == 2 ? v : cyclic[v]);
+                      const unsigned int cv = GeometryInfo<dim>::face_to_cell_vertices(
+                        side == 0 ? f : fo, lv);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        {
+                          const unsigned int k = (side * n_face_vertices + v) * dim + c;
+                          face.dofs[k] = cell->vertex_dof_index(cv, c);
+                          face.X[k]    = cell->vertex(cv)[c];
+                        }
+                    }
+                owned_faces.push_back(face);
+              }
+      const auto all_faces = Utilities::MPI::all_gather(comm, owned_faces);
+      faces2.clear();
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      for (unsigned int r = 0; r < all_faces.size(); ++r)
+        {
+          if (r == rank)
+            {
+              first_owned_face = faces2.size();
+              n_owned_faces    = all_faces[r].size();
+            }
+          faces2.insert(faces2.end(), all_faces[r].begin(), all_faces[r].end());
+        }
+
+      // Free ends: 2D vertices of one face, 3D vertices of edges of one
+      // face (vertices are identified by their first DoF).
+      {
+        std::map<std::vector<types::global_dof_index>, unsigned int> count;
+        auto key = [&](const Face2 &f, const unsigned int v) {
+          std::vector<types::global_dof_index> k = {f.dofs[v * dim]};
+          if (dim == 3)
+            {
+              k.push_back(f.dofs[((v + 1) % n_face_vertices) * dim]);
+              std::sort(k.begin(), k.end());
+            }
+          return k;
+        };
+        for (const auto &f : faces2)
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            ++count[key(f, v)];
+        for (auto &f : faces2)
+          {
+            f.end_stretch.fill(-1.);
+            for (unsigned int v = 0; v < n_face_vertices; ++v)
+              if (count[key(f, v)] == 1)
+                {
+                  f.end_stretch[v] = prm.end_stretch;
+                  if (dim == 3)
+                    f.end_stretch[(v + 1) % n_face_vertices] = prm.end_stretch;
+                }
+          }
+      }
+
+      // Check the input.
+      std::vector<unsigned int> ids1(body1.begin(), body1.end()),
+        ids2(body2.begin(), body2.end());
+      std::set<unsigned int> all1, all2;
+      for (const auto &part : Utilities::MPI::all_gather(comm, ids1))
+        all1.insert(part.begin(), part.end());
+      for (const auto &part : Utilities::MPI::all_gather(comm, ids2))
+        all2.insert(part.begin(), part.end());
+      if (all1.empty())
+        throw InputError("Contact > Contact boundary id",
+                         "boundary " + std::to_string(contact_boundary) +
+                           " does not exist in the mesh");
+      if (faces2.empty())
+        throw InputError("Contact > Two bodies > Target boundary id",
+                         "boundary " + std::to_string(prm.target_boundary) +
+                           " does not exist in the mesh");
+      for (const auto id : all1)
+        if (all2.count(id) > 0)
+          throw InputError("Contact > Two bodies > Target boundary id",
+                           "boundaries " + std::to_string(contact_boundary) +
+                             " and " + std::to_string(prm.target_boundary) +
+                             " both lie on the body with material id " +
+                             std::to_string(id) +
+                             ": the contact boundary and the target surface "
+                             "must belong to different bodies");
+
+      min_face_size  = std::numeric_limits<double>::max();
+      mean_face_size = 0.;
+      min_layer      = std::numeric_limits<double>::max();
+      for (const auto &f : faces2)
+        {
+          min_face_size = std::min(min_face_size, f.h);
+          mean_face_size += f.h / faces2.size();
+          // Distance between the face's and the opposite face's centroids.
+          Tensor<1, dim> offset;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              offset[c] += (f.X[(n_face_vertices + v) * dim + c] - f.X[v * dim + c]) /
+                           n_face_vertices;
+          min_layer = std::min(min_layer, prm.apex_depth * offset.norm());
+        }
+
+      // Rows this rank's pairs may write to: body 2's face DoFs and the
+      // DoFs their constraints refer to.
+      std::vector<types::global_dof_index> rows;
+      for (unsigned int i = first_owned_face; i < first_owned_face + n_owned_faces; ++i)
+        for (const auto dof : faces2[i].dofs)
+          {
+            rows.push_back(dof);
+            if (const auto *entries = constraints.get_constraint_entries(dof))
+              for (const auto &e : *entries)
+                rows.push_back(e.first);
+          }
+      extra_rows = IndexSet(dof_handler.n_dofs());
+      for (const auto &part : Utilities::MPI::all_gather(comm, rows))
+        {
+          std::vector<types::global_dof_index> sorted(part);
+          std::sort(sorted.begin(), sorted.end());
+          sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+          extra_rows.add_indices(sorted.begin(), sorted.end());
+        }
+      extra_rows.compress();
+
+      stats                = PairStatistics();
+      stats.target_faces   = faces2.size();
+      stats.points         = Utilities::MPI::sum(static_cast<unsigned int>(points.size()), comm);
+      pattern.clear();
+    }
+
+    template <int dim>
+    Point<dim>
+    TwoBodyContact<dim>::position(const Point1 &p, const VectorType &u) const
+    {
+      Point<dim> x = p.X;
+      for (unsigned int j = 0; j < p.dofs.size(); ++j)
+        x[p.components[j]] += p.shape[j] * u[p.dofs[j]];
+      return x;
+    }
+
+    template <int dim>
+    std::vector<IndicatorFace<dim>>
+    TwoBodyContact<dim>::current_faces(const VectorType &u) const
+    {
+      const MPI_Comm      comm = dof_handler.get_communicator();
+      std::vector<double> local;
+      local.reserve(n_owned_faces * n_target_dofs);
+      for (unsigned int i = first_owned_face; i < first_owned_face + n_owned_faces; ++i)
+        for (unsigned int k = 0; k < n_target_dofs; ++k)
+          local.push_back(faces2[i].X[k] + u[faces2[i].dofs[k]]);
+      std::vector<double> all;
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        all = std::move(local);
+      else
+        for (const auto &part : Utilities::MPI::all_gather(comm, local))
+          all.insert(all.end(), part.begin(), part.end());
+      std::vector<IndicatorFace<dim>> faces(faces2.size());
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        faces[i].end_stretch = faces2[i].end_stretch;
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        for (unsigned int v = 0; v < n_face_vertices; ++v)
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              faces[i].face[v][c] = all[i * n_target_dofs + v * dim + c];
+              faces[i].opposite[v][c] =
+                all[i * n_target_dofs + (n_face_vertices + v) * dim + c];
+            }
+      return faces;
+    }
+
+    template <int dim>
+    std::vector<std::pair<unsigned int, unsigned int>>
+    TwoBodyContact<dim>::find_pairs(const std::vector<Point1>             &pts,
+                                    const VectorType                      &u,
+                                    const std::vector<IndicatorFace<dim>> &faces,
+                                    const double                           margin,
+                                    const bool positive_only) const
+    {
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+      boxes.reserve(faces.size());
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        {
+          BoundingBox<dim> box = faces[i].bounding_box(prm.stretch, prm.apex_depth);
+          if (margin > 0.)
+            box.extend(margin * faces2[i].h);
+          boxes.emplace_back(box, i);
+        }
+      const auto tree = pack_rtree(boxes);
+      std::vector<std::pair<unsigned int, unsigned int>>     pairs;
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      for (unsigned int k = 0; k < pts.size(); ++k)
+        {
+          const Point<dim> x = position(pts[k], u);
+          hits.clear();
+          tree.query(bgi::intersects(x), std::back_inserter(hits));
+          for (const auto &hit : hits)
+            if (!positive_only ||
+                faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.)
+              pairs.emplace_back(k, hit.second);
+        }
+      return pairs;
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::add_sparsity(TrilinosWrappers::SparsityPattern &sparsity,
+                                      const AffineConstraints<double>   &constraints,
+                                      const VectorType                  &u)
+    {
+      const auto faces = current_faces(u);
+      const auto pairs = find_pairs(points, u, faces, prm.search_margin, false);
+      const AffineConstraints<double> &c = assembly_constraints(constraints);
+      pattern.clear();
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &pair : pairs)
+        {
+          pattern.insert(pair);
+          const Point1 &p = points[pair.first];
+          dofs.assign(p.dofs.begin(), p.dofs.end());
+          dofs.insert(dofs.end(), faces2[pair.second].dofs.begin(),
+                      faces2[pair.second].dofs.end());
+          c.add_entries_local_to_global(dofs, sparsity, false);
+        }
+      stats.pattern_pairs = Utilities::MPI::sum(
+        static_cast<unsigned long long>(pattern.size()), dof_handler.get_communicator());
+      ++stats.pattern_builds;
+    }
+
+    template <int dim>
+    bool
+    TwoBodyContact<dim>::needs_new_pattern(const VectorType &u)
+    {
+      const auto faces = current_faces(u);
+      bool       missing = false;
+      for (const auto &pair : find_pairs(points, u, faces, 0., true))
+        if (pattern.count(pair) == 0)
+          {
+            missing = true;
+            break;
+          }
+      return Utilities::MPI::logical_or(missing, dof_handler.get_communicator());
+    }
+
+    template <int dim>
+    bool
+    TwoBodyContact<dim>::admissible(const VectorType &u) const
+    {
+      const auto faces = current_faces(u);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        boxes.emplace_back(faces[i].bounding_box(prm.stretch, prm.apex_depth), i);
+      const auto tree = pack_rtree(boxes);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      bool                                                   ok = true;
+      for (const auto *list : {&node_points, &points})
+        for (const auto &p : *list)
+          {
+            const Point<dim> x = position(p, u);
+            hits.clear();
+            tree.query(bgi::intersects(x), std::back_inserter(hits));
+            bool   inside = false;
+            double phi    = 0.;
+            for (const auto &hit : hits)
+              {
+                inside = inside || faces[hit.second].in_cell(x);
+                phi += faces[hit.second].value(x, prm.stretch, prm.apex_depth);
+              }
+            if (inside && !(phi > 0.))
+              {
+                ok = false;
+                break;
+              }
+          }
+      return !Utilities::MPI::logical_or(!ok, dof_handler.get_communicator());
+    }
+
+    template <int dim>
+    double
+    TwoBodyContact<dim>::max_step(const VectorType &u, const VectorType &d) const
+    {
+      VectorType direction;
+      direction.reinit(u, true);
+      direction = d;
+      double largest = 0.;
+      for (const auto &p : points)
+        {
+          Tensor<1, dim> motion;
+          for (unsigned int j = 0; j < p.dofs.size(); ++j)
+            motion[p.components[j]] += p.shape[j] * direction[p.dofs[j]];
+          largest = std::max(largest, motion.norm());
+        }
+      for (unsigned int i = first_owned_face; i < first_owned_face + n_owned_faces; ++i)
+        for (unsigned int v = 0; v < 2 * n_face_vertices; ++v)
+          {
+            Tensor<1, dim> motion;
+            for (unsigned int c = 0; c < dim; ++c)
+              motion[c] = direction[faces2[i].dofs[v * dim + c]];
+            largest = std::max(largest, motion.norm());
+          }
+      largest = Utilities::MPI::max(largest, dof_handler.get_communicator());
+      const double allowed = prm.max_motion * min_layer;
+      return largest > allowed ? allowed / largest :
+                                 std::numeric_limits<double>::infinity();
+    }
+
+    template <int dim>
+    const AffineConstraints<double> &
+    TwoBodyContact<dim>::assembly_constraints(const AffineConstraints<double> &constraints) const
+    {
+      const MPI_Comm comm = dof_handler.get_communicator();
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        return constraints;
+      // The owner of a body 2 face knows the constraint lines of its DoFs;
+      // send them to every rank. A line: index, inhomogeneity, n entries,
+      // then (column, value) pairs, all as doubles (DoF indices < 2^53).
+      std::vector<double> lines;
+      for (unsigned int i = first_owned_face; i < first_owned_face + n_owned_faces; ++i)
+        for (const auto dof : faces2[i].dofs)
+          if (const auto *entries = constraints.get_constraint_entries(dof))
+            {
+              lines.push_back(dof);
+              lines.push_back(constraints.get_inhomogeneity(dof));
+              lines.push_back(entries->size());
+              for (const auto &e : *entries)
+                {
+                  lines.push_back(e.first);
+                  lines.push_back(e.second);
+                }
+            }
+      IndexSet local_lines = relevant;
+      local_lines.add_indices(extra_rows);
+      merged.clear();
+      merged.reinit(local_lines);
+      merged.merge(constraints,
+                   AffineConstraints<double>::MergeConflictBehavior::no_conflicts_allowed,
+                   true);
+      for (const auto &part : Utilities::MPI::all_gather(comm, lines))
+        for (std::size_t k = 0; k < part.size();)
+          {
+            const auto   dof = static_cast<types::global_dof_index>(part[k]);
+            const double b   = part[k + 1];
+            const auto   n   = static_cast<std::size_t>(part[k + 2]);
+            k += 3;
+            const bool known = merged.is_constrained(dof);
+            if (!known)
+              {
+                merged.add_line(dof);
+                merged.set_inhomogeneity(dof, b);
+              }
+            for (std::size_t e = 0; e < n; ++e, k += 2)
+              if (!known)
+                merged.add_entry(dof, static_cast<types::global_dof_index>(part[k]),
+                                 part[k + 1]);
+          }
+      merged.close();
+      return merged;
+    }
+
+    template <int dim>
+    double
+    TwoBodyContact<dim>::add_penalty(const VectorType                &u,
+                                     const double                     mu,
+                                     const AffineConstraints<double> &constraints,
+                                     VectorType                      *rhs,
+                                     MatrixType                      *hessian,
+                                     std::vector<double>             *forces) const
+    {
+      const MPI_Comm comm  = dof_handler.get_communicator();
+      const auto     faces = current_faces(u);
+      const auto     pairs = find_pairs(points, u, faces, 0., false);
+      const AffineConstraints<double> &c =
+        (rhs || hessian) ? assembly_constraints(constraints) : constraints;
+      VectorType force_vector;
+      if (forces)
+        force_vector.reinit(dof_handler.locally_owned_dofs(), relevant, comm, true);
+
+      constexpr unsigned int n_variables = IndicatorFace<dim>::n_variables;
+      Vector<double>         g(n_variables);
+      FullMatrix<double>     H(n_variables, n_variables);
+      Vector<double>         local_rhs;
+      FullMatrix<double>     local_matrix;
+      std::vector<types::global_dof_index> dofs;
+      double value = 0.;
+      for (const auto &pair : pairs)
+        {
+          const Point1             &p    = points[pair.first];
+          const IndicatorFace<dim> &face = faces[pair.second];
+          const Point<dim>          x    = position(p, u);
+          const double phi = face.value(x, prm.stretch, prm.apex_depth);
+          if (!(phi > 0.))
+            continue;
+          const double scale = mu * p.weight;
+          value += scale * phi;
+          if (!rhs && !hessian && !forces)
+            continue;
+          face.derivatives(x, prm.stretch, g, H, prm.apex_depth);
+          const unsigned int n1 = p.dofs.size();
+          const unsigned int n  = n1 + n_target_dofs;
+          // Local DoF j -> kernel variable var[j] with factor fac[j].
+          std::vector<unsigned int> var(n);
+          std::vector<double>       fac(n, 1.);
+          for (unsigned int j = 0; j < n1; ++j)
+            {
+              var[j] = p.components[j];
+              fac[j] = p.shape[j];
+            }
+          for (unsigned int j = 0; j < n_target_dofs; ++j)
+            var[n1 + j] = dim + j;
+          if (forces)
+            for (unsigned int j = 0; j < n1; ++j)
+              force_vector(p.dofs[j]) += -scale * fac[j] * g(var[j]);
+          if (!rhs && !hessian)
+            continue;
+          dofs.assign(p.dofs.begin(), p.dofs.end());
+          dofs.insert(dofs.end(), faces2[pair.second].dofs.begin(),
+                      faces2[pair.second].dofs.end());
+          local_rhs.reinit(n);
+          local_matrix.reinit(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              local_rhs(i) = -scale * fac[i] * g(var[i]);
+              for (unsigned int j = 0; j < n; ++j)
+                local_matrix(i, j) = scale * fac[i] * fac[j] * H(var[i], var[j]);
+            }
+          if (rhs && hessian)
+            c.distribute_local_to_global(local_matrix, local_rhs, dofs, *hessian, *rhs);
+          else if (rhs)
+            c.distribute_local_to_global(local_rhs, dofs, *rhs);
+          else
+            c.distribute_local_to_global(local_matrix, dofs, *hessian);
+        }
+      if (rhs)
+        rhs->compress(VectorOperation::add);
+      if (hessian)
+        hessian->compress(VectorOperation::add);
+      if (forces)
+        {
+          force_vector.compress(VectorOperation::add);
+          forces->assign(nodes().size() * dim, 0.);
+          for (unsigned int k = 0; k < nodes().size(); ++k)
+            for (unsigned int d = 0; d < dim; ++d)
+              (*forces)[k * dim + d] = force_vector(nodes()[k].dofs[d]);
+        }
+      stats.last_pairs =
+        Utilities::MPI::sum(static_cast<unsigned long long>(pairs.size()), comm);
+      stats.max_pairs = std::max(stats.max_pairs, stats.last_pairs);
+      return Utilities::MPI::sum(value, comm);
+    }
+
+    template <int dim>
+    double
+    TwoBodyContact<dim>::penetration_ratio(const std::vector<Point<dim>>         &x,
+                                           const std::vector<IndicatorFace<dim>> &faces,
+                                           std::vector<double> *depths) const
+    {
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        boxes.emplace_back(faces[i].bounding_box(prm.stretch, prm.apex_depth), i);
+      const auto tree = pack_rtree(boxes);
+      double     worst = 0.;
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      if (depths)
+        depths->assign(x.size(), 0.);
+      for (unsigned int k = 0; k < x.size(); ++k)
+        {
+          hits.clear();
+          tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
+          double depth = -1., h = 1.;
+          for (const auto &hit : hits)
+            {
+              const double d = faces[hit.second].depth(x[k], prm.stretch, prm.apex_depth);
+              if (d >= 0. && (depth < 0. || d < depth))
+                {
+                  depth = d;
+                  h     = faces2[hit.second].h;
+                }
+            }
+          if (depth > 0.)
+            {
+              worst = std::max(worst, depth / h);
+              if (depths)
+                (*depths)[k] = depth;
+            }
+        }
+      return worst;
+    }
+
+    template <int dim>
+    std::vector<double>
+    TwoBodyContact<dim>::node_pressures(const std::vector<double> &forces) const
+    {
+      std::vector<double> p(nodes().size(), 0.);
+      for (unsigned int k = 0; k < nodes().size(); ++k)
+        {
+          Tensor<1, dim> f;
+          for (unsigned int d = 0; d < dim; ++d)
+            f[d] = forces[k * dim + d];
+          p[k] = f.norm() / nodes()[k].weight;
+        }
+      return p;
+    }
+
+    template <int dim>
+    typename TwoBodyContact<dim>::Summary
+    TwoBodyContact<dim>::summarize(const VectorType          &u,
+                                   const std::vector<double> &forces) const
+    {
+      const MPI_Comm comm  = dof_handler.get_communicator();
+      const auto     faces = current_faces(u);
+      Summary        s;
+      s.n_nodes = boundary.n_global();
+      // Penetration at the nodes and, for the integral form, at the Gauss
+      // points too.
+      std::vector<Point<dim>> x;
+      for (const auto &p : node_points)
+        x.push_back(position(p, u));
+      if (prm.integral)
+        for (const auto &p : points)
+          x.push_back(position(p, u));
+      s.max_penetration_ratio =
+        Utilities::MPI::max(penetration_ratio(x, faces), comm);
+      const auto pressures = node_pressures(forces);
+      double     largest   = 0.;
+      for (const double p : pressures)
+        largest = std::max(largest, p);
+      largest = Utilities::MPI::max(largest, comm);
+      for (unsigned int k = 0; k < nodes().size(); ++k)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            s.total_force[d] += forces[k * dim + d];
+          if (pressures[k] > 1e-6 * largest)
+            ++s.n_active;
+        }
+      s.n_active     = Utilities::MPI::sum(s.n_active, comm);
+      s.max_pressure = largest;
+      for (unsigned int d = 0; d < dim; ++d)
+        s.total_force[d] = Utilities::MPI::sum(s.total_force[d], comm);
+      return s;
+    }
+
+    template <int dim>
+    typename PenaltyTerm<dim>::Measure
+    TwoBodyContact<dim>::measure(const VectorType          &u,
+                                 const std::vector<double> &forces) const
+    {
+      const Summary s = summarize(u, forces);
+      return {s.max_penetration_ratio, s.n_active};
+    }
+
+    template <int dim>
+    std::vector<std::pair<Point<dim>, double>>
+    TwoBodyContact<dim>::gather_pressure(const VectorType          &u,
+                                         const std::vector<double> &forces) const
+    {
+      const auto pressures = node_pressures(forces);
+      double     largest   = 0.;
+      for (const double p : pressures)
+        largest = std::max(largest, p);
+      largest = Utilities::MPI::max(largest, dof_handler.get_communicator());
+      std::vector<std::pair<Point<dim>, double>> local;
+      for (unsigned int k = 0; k < nodes().size(); ++k)
+        if (pressures[k] > 1e-6 * largest)
+          local.emplace_back(position(node_points[k], u), pressures[k]);
+      std::vector<std::pair<Point<dim>, double>> all;
+      for (const auto &part :
+           Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a.first[d] != b.first[d])
+            return a.first[d] < b.first[d];
+        return false;
+      });
+      return all;
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::write_profile(
+      const std::string                               &file,
+      const VectorType                                &u,
+      const std::vector<double>                       &forces,
+      const std::function<double(const Point<dim> &)> &reference_pressure) const
+    {
+      const auto              faces     = current_faces(u);
+      const auto              pressures = node_pressures(forces);
+      std::vector<Point<dim>> x;
+      for (const auto &p : node_points)
+        x.push_back(position(p, u));
+      std::vector<double> depths;
+      penetration_ratio(x, faces, &depths);
+      if (getenv("SIGNORINI_DEBUG"))
+        for (unsigned int k = 0; k < x.size(); ++k)
+          if (x[k][0] < 2.)
+            {
+              std::cerr << "node " << x[k] << "\n";
+              for (const auto &f : faces)
+                if (std::abs(f.face[0][0] - x[k][0]) < 0.5)
+                  std::cerr << "   face " << f.face[0] << " | " << f.face[1] << " opp " << f.opposite[0] << " | " << f.opposite[1] << " phi " << f.value(x[k], prm.stretch, prm.apex_depth) << "\n";
+            }
+      std::vector<std::vector<double>> rows;
+      for (unsigned int k = 0; k < nodes().size(); ++k)
+        {
+          std::vector<double> row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(nodes()[k].X[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(x[k][d]);
+          row.push_back(depths[k]);
+          row.push_back(pressures[k]);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(forces[k * dim + d]);
+          row.push_back(nodes()[k].weight);
+          if (reference_pressure)
+            row.push_back(reference_pressure(x[k]));
+          rows.push_back(row);
+        }
+      std::ostringstream header;
+      const char        *axes = "xyz";
+      for (unsigned int d = 0; d < dim; ++d)
+        header << (d ? "," : "") << "X" << axes[d];
+      for (unsigned int d = 0; d < dim; ++d)
+        header << "," << axes[d];
+      header << ",penetration,pressure";
+      for (unsigned int d = 0; d < dim; ++d)
+        header << ",force_" << axes[d];
+      header << ",weight";
+      if (reference_pressure)
+        header << ",reference_pressure";
+      boundary.write_csv(file, header.str(), rows);
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::add_output_fields(DataOut<dim>              &data_out,
+                                           const VectorType          &u,
+                                           const std::vector<double> &forces)
+    {
+      const auto              faces     = current_faces(u);
+      const auto              pressures = node_pressures(forces);
+      std::vector<Point<dim>> x;
+      for (const auto &p : node_points)
+        x.push_back(position(p, u));
+      std::vector<double> depths;
+      penetration_ratio(x, faces, &depths);
+      double largest = 0.;
+      for (const double p : pressures)
+        largest = std::max(largest, p);
+      largest = Utilities::MPI::max(largest, dof_handler.get_communicator());
+      std::vector<double> active(pressures.size());
+      for (unsigned int k = 0; k < pressures.size(); ++k)
+        active[k] = (pressures[k] > 1e-6 * largest ? 1. : 0.);
+      boundary.add_fields(data_out,
+                          {"contact_pressure", "contact_penetration", "contact_active"},
+                          {pressures, depths, active});
+    }
+
+    template class TwoBodyContact<2>;
+    template class TwoBodyContact<3>;
+  } // namespace Contact
+} // namespace Signorini
