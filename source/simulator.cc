@@ -658,7 +658,7 @@ namespace Signorini
     const double    mu_start =
       continuation_parameters.restart_each_step ?
         mu0 :
-        std::max(mu0, last_mu / continuation_parameters.max_growth);
+        std::max(mu0, last_mu / continuation_parameters.step_reduction);
     std::unique_ptr<Objective> objective;
     Contact::PenaltyTerm<dim> *penalty_term =
       contact ? static_cast<Contact::PenaltyTerm<dim> *>(contact.get()) :

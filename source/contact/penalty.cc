@@ -84,8 +84,17 @@ namespace Signorini
                         Patterns::Bool(),
                         "true: every load step starts again from mu_0. "
                         "false: a load step starts from the previous step's "
-                        "final penalty divided by the maximum growth (at "
+                        "final penalty divided by 'Load step reduction' (at "
                         "least mu_0).");
+      prm.declare_entry("Load step reduction",
+                        "1e4",
+                        Patterns::Double(1.),
+                        "A load step starts from the previous step's final "
+                        "penalty divided by this [-]; >= 1. A large value "
+                        "eases Newton's first iterations; a small one keeps "
+                        "the penetration small throughout, which two-body "
+                        "contact needs (its penalty acts only in a thin "
+                        "layer).");
     }
 
     void
@@ -98,6 +107,7 @@ namespace Signorini
       max_growth            = prm.get_double("Maximum growth");
       max_stages            = prm.get_integer("Maximum stages");
       restart_each_step     = prm.get_bool("Restart each load step");
+      step_reduction        = prm.get_double("Load step reduction");
       if (!(initial_factor > 0.))
         throw InputError("Solver > Penalty > Initial penalty factor",
                          "must be > 0, got " + prm.get("Initial penalty factor"));

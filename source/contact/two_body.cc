@@ -14,7 +14,6 @@
 #include <cmath>
 #include <map>
 #include <sstream>
-#include <iostream>
 
 namespace Signorini
 {
@@ -797,15 +796,6 @@ namespace Signorini
         x.push_back(position(p, u));
       std::vector<double> depths;
       penetration_ratio(x, faces, &depths);
-      if (getenv("SIGNORINI_DEBUG"))
-        for (unsigned int k = 0; k < x.size(); ++k)
-          if (x[k][0] < 2.)
-            {
-              std::cerr << "node " << x[k] << "\n";
-              for (const auto &f : faces)
-                if (std::abs(f.face[0][0] - x[k][0]) < 0.5)
-                  std::cerr << "   face " << f.face[0] << " | " << f.face[1] << " opp " << f.opposite[0] << " | " << f.opposite[1] << " phi " << f.value(x[k], prm.stretch, prm.apex_depth) << "\n";
-            }
       std::vector<std::vector<double>> rows;
       for (unsigned int k = 0; k < nodes().size(); ++k)
         {

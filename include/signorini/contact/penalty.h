@@ -152,6 +152,7 @@ namespace Signorini
       double       max_growth            = 1e4;
       unsigned int max_stages            = 20;
       bool         restart_each_step     = false;
+      double       step_reduction        = 1e4;
 
       static void
       declare_parameters(ParameterHandler &prm);

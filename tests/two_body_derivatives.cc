@@ -1,0 +1,167 @@
+// Two-body contact term mu P(U) (nodal and integral forms, 2D and 3D, Q1
+// and Q2): its assembled gradient and Hessian, with the coupled blocks
+// between body 1's contact DoFs and body 2's cell DoFs, against central
+// differences of the value and of the gradient along random directions
+// (one of them moving body 2 only). Body 1 (a coarser box) overlaps the
+// top layer of body 2's cells, shifted sideways so that the meshes do not
+// match; everything is perturbed randomly. A 0.1% Hessian error must be
+// rejected.
+
+#include <signorini/contact/two_body.h>
+#include <signorini/mesh.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <fstream>
+#include <random>
+
+using namespace dealii;
+using namespace Signorini;
+
+template <int dim>
+void
+check(const unsigned int degree, const bool integral, std::ostream &out)
+{
+  const MPI_Comm                            comm = MPI_COMM_WORLD;
+  parallel::distributed::Triangulation<dim> tria(comm);
+  std::vector<BodyGeometry>                 bodies(2);
+  for (unsigned int b = 0; b < 2; ++b)
+    {
+      bodies[b].lower_corner.assign(dim, 0.);
+      bodies[b].upper_corner.assign(dim, 1.);
+      bodies[b].subdivisions.assign(dim, b == 0 ? 2 : 3);
+    }
+  // Body 1 above, its bottom 0.06 inside body 2's top cells (depth 1/3).
+  bodies[0].lower_corner[0]     = 0.07;
+  bodies[0].upper_corner[0]     = 0.87;
+  bodies[0].lower_corner[dim - 1] = 1. - 0.06;
+  bodies[0].upper_corner[dim - 1] = 2. - 0.06;
+  bodies[1].boundary_id_offset  = 10;
+  MeshParameters mesh;
+  build_scene_mesh<dim>(mesh, bodies, {0, 1}, tria);
+
+  FESystem<dim>   fe(FE_Q<dim>(degree), dim);
+  MappingQ<dim>   mapping(degree);
+  DoFHandler<dim> dof(tria);
+  dof.distribute_dofs(fe);
+  const IndexSet owned    = dof.locally_owned_dofs();
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof);
+  AffineConstraints<double> none(relevant);
+  none.close();
+
+  Contact::TwoBodyParameters parameters;
+  parameters.target_boundary = 10 + 2 * (dim - 1) + 1; // body 2's top
+  parameters.integral        = integral;
+  parameters.gauss_points    = 3;
+  Contact::TwoBodyContact<dim> contact(parameters, 2 * (dim - 1), dof, mapping);
+  contact.setup(none, none);
+
+  std::mt19937                           rng(11 + degree + dim + integral);
+  std::uniform_real_distribution<double> uniform(-1., 1.);
+  auto random_vector = [&](const double amplitude, const bool body2_only) {
+    VectorType                           v(owned, comm);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof.active_cell_iterators())
+      if (cell->is_locally_owned() && (!body2_only || cell->material_id() == 1))
+        {
+          cell->get_dof_indices(dofs);
+          for (const auto i : dofs)
+            if (owned.is_element(i))
+              v[i] = amplitude * uniform(rng);
+        }
+    v.compress(VectorOperation::insert);
+    return v;
+  };
+  auto ghosted = [&](const VectorType &v) {
+    VectorType g(owned, relevant, comm);
+    g = v;
+    return g;
+  };
+  const VectorType u = random_vector(0.01, false);
+
+  IndexSet writable = relevant;
+  writable.add_indices(contact.coupled_rows());
+  TrilinosWrappers::SparsityPattern sp(owned, owned, writable, comm);
+  DoFTools::make_sparsity_pattern(dof, sp, none, false);
+  contact.add_sparsity(sp, none, ghosted(u));
+  sp.compress();
+  MatrixType H;
+  H.reinit(sp);
+  VectorType          rhs(owned, comm);
+  const double        mu = 50.;
+  std::vector<double> forces;
+  const double value = contact.add_penalty(ghosted(u), mu, none, &rhs, &H, &forces);
+  const auto   pairs = contact.pair_statistics().last_pairs;
+
+  const double h = 1e-6;
+  auto fd_errors = [&](const MatrixType &matrix, const VectorType &v) {
+    VectorType up(u), um(u);
+    up.add(h, v);
+    um.add(-h, v);
+    VectorType   rp(owned, comm), rm(owned, comm);
+    const double vp = contact.add_penalty(ghosted(up), mu, none, &rp, nullptr);
+    const double vm = contact.add_penalty(ghosted(um), mu, none, &rm, nullptr);
+    const double directional = -(rhs * v);
+    VectorType   Hv(owned, comm);
+    matrix.vmult(Hv, v);
+    VectorType fd(rm);
+    fd.add(-1., rp);
+    fd /= (2 * h);
+    fd -= Hv;
+    return std::make_pair(std::abs((vp - vm) / (2 * h) - directional) /
+                            std::abs(directional),
+                          fd.l2_norm() / Hv.l2_norm());
+  };
+  double worst_gradient = 0., worst_hessian = 0.;
+  for (unsigned int trial = 0; trial < 4; ++trial)
+    {
+      const auto e   = fd_errors(H, random_vector(1., trial == 0));
+      worst_gradient = std::max(worst_gradient, e.first);
+      worst_hessian  = std::max(worst_hessian, e.second);
+    }
+  // The coupled block: moving body 2 only changes body 1's forces.
+  const VectorType v2 = random_vector(1., true);
+  VectorType       Hv2(owned, comm);
+  H.vmult(Hv2, v2);
+  double body1_part = 0.;
+  for (const auto &n : contact.nodes())
+    for (unsigned int c = 0; c < dim; ++c)
+      body1_part += Hv2[n.dofs[c]] * Hv2[n.dofs[c]];
+  body1_part = Utilities::MPI::sum(body1_part, comm);
+
+  const bool ok = value > 0. && pairs > 0 && worst_gradient < 1e-6 &&
+                  worst_hessian < 1e-5 && body1_part > 0.;
+  out << dim << "D Q" << degree << (integral ? " integral" : " nodal") << ": "
+      << (value > 0. ? "penetrating" : "NOT penetrating") << ", "
+      << (pairs > 0 ? "pairs evaluated" : "NO pairs")
+      << "; gradient vs FD " << (worst_gradient < 1e-6 ? "ok" : "FAIL")
+      << ", Hessian vs FD " << (worst_hessian < 1e-5 ? "ok" : "FAIL")
+      << ", coupled block " << (body1_part > 0. ? "present" : "MISSING") << "\n";
+  if (!ok)
+    std::cerr << "errors " << worst_gradient << " " << worst_hessian << "\n";
+  if (degree == 1 && !integral)
+    {
+      H *= 1.001;
+      out << dim << "D: a Hessian scaled by 1.001 is "
+          << (fd_errors(H, random_vector(1., false)).second >= 1e-5 ? "rejected" :
+                                                                    "NOT rejected")
+          << "\n";
+    }
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out("output");
+  for (const bool integral : {false, true})
+    {
+      check<2>(1, integral, out);
+      check<2>(2, integral, out);
+      check<3>(1, integral, out);
+    }
+}
