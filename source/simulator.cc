@@ -444,6 +444,10 @@ namespace Signorini
         timer.reset(); // quietly, while the exception is caught
         throw;
       }
+    // The penalty scale: the largest small-strain Young's modulus.
+    double E_max = 0.;
+    for (const auto &m : material_objects)
+      E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
     if (contact)
       {
         report.contact_nodes = contact->n_global_nodes();
@@ -452,9 +456,6 @@ namespace Signorini
                            "boundary " + std::to_string(contact->boundary_id()) +
                              " has no contact node (every node on it is a "
                              "hanging node)");
-        double E_max = 0.;
-        for (const auto &m : material_objects)
-          E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
         mu0 = continuation_parameters.initial_factor * E_max /
               std::pow(contact->min_mesh_size(), 2);
         report.initial_penalty = mu0;
@@ -468,9 +469,6 @@ namespace Signorini
         report.contact_nodes = two_body->n_global_nodes();
         // mu P has the units of energy per length^(dim-1) times Phi (<= 1
         // inside a simplex): mu_0 = c_0 E h.
-        double E_max = 0.;
-        for (const auto &m : material_objects)
-          E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
         mu0 = continuation_parameters.initial_factor * E_max *
               std::pow(two_body->min_mesh_size(), dim - 1);
         report.initial_penalty = mu0;
@@ -741,7 +739,6 @@ namespace Signorini
         if (hertz.active())
           pressure = two_body->gather_pressure(solution_ghosted, contact_forces);
       }
-    record.contact_force = total_force[dim - 1];
     for (unsigned int d = 0; d < dim; ++d)
       record.contact_force_vector[d] = total_force[d];
     const char *axes = "xyz";
@@ -1056,7 +1053,7 @@ namespace Signorini
           {
             o["active contact nodes"]   = s.active_nodes;
             o["max penetration over h"] = s.penetration_ratio;
-            o["contact force"]          = s.contact_force;
+            o["contact force"]          = s.contact_force_vector[dim - 1];
             if (two_body)
               o["evaluated pairs"] = s.pairs;
           }
@@ -1110,7 +1107,7 @@ namespace Signorini
             << s.stages.size() << ","
             << (s.stages.empty() ? 0. : s.stages.back().mu) << ","
             << s.active_nodes << "," << s.penetration_ratio << ","
-            << s.contact_force;
+            << s.contact_force_vector[dim - 1];
         for (unsigned int d = 0; d < dim; ++d)
           csv << "," << s.contact_force_vector[d];
         csv << "," << s.pairs << "\n";

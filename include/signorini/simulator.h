@@ -60,8 +60,7 @@ namespace Signorini
       // Contact state at the end of the step.
       unsigned int active_nodes       = 0;
       double       penetration_ratio  = 0.;
-      double       contact_force      = 0.; // along x_d
-      Tensor<1, 3> contact_force_vector;    // on body 1 (or the body)
+      Tensor<1, 3> contact_force_vector; // on body 1 (or the body)
       unsigned long long pairs = 0;         // two bodies: evaluated pairs
     };
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace Signorini
 {
@@ -177,6 +178,43 @@ namespace Signorini
             out << (i ? "," : "") << row[i];
           out << "\n";
         }
+    }
+
+    template <int dim>
+    std::string
+    BoundaryNodes<dim>::profile_header(const std::string &middle, const bool reference)
+    {
+      std::ostringstream header;
+      const char        *axes = "xyz";
+      for (unsigned int d = 0; d < dim; ++d)
+        header << (d ? "," : "") << "X" << axes[d];
+      for (unsigned int d = 0; d < dim; ++d)
+        header << "," << axes[d];
+      header << "," << middle;
+      for (unsigned int d = 0; d < dim; ++d)
+        header << ",force_" << axes[d];
+      header << ",weight";
+      if (reference)
+        header << ",reference_pressure";
+      return header.str();
+    }
+
+    template <int dim>
+    std::vector<std::pair<Point<dim>, double>>
+    BoundaryNodes<dim>::gather_sorted(
+      const std::vector<std::pair<Point<dim>, double>> &local) const
+    {
+      std::vector<std::pair<Point<dim>, double>> all;
+      for (const auto &part :
+           Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a.first[d] != b.first[d])
+            return a.first[d] < b.first[d];
+        return false;
+      });
+      return all;
     }
 
     template class BoundaryNodes<2>;

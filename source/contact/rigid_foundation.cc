@@ -11,7 +11,6 @@
 #include <fstream>
 #include <iomanip>
 #include <set>
-#include <sstream>
 
 namespace Signorini
 {
@@ -159,17 +158,7 @@ namespace Signorini
             const State s = evaluate(contact_nodes()[k], u);
             local.emplace_back(s.x, pressure(contact_nodes()[k], s, forces[k]));
           }
-      std::vector<std::pair<Point<dim>, double>> all;
-      for (const auto &part :
-           Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
-        all.insert(all.end(), part.begin(), part.end());
-      std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-        for (unsigned int d = 0; d < dim; ++d)
-          if (a.first[d] != b.first[d])
-            return a.first[d] < b.first[d];
-        return false;
-      });
-      return all;
+      return boundary.gather_sorted(local);
     }
 
     template <int dim>
@@ -202,19 +191,10 @@ namespace Signorini
             row.push_back(reference_pressure(s.x));
           rows.push_back(row);
         }
-      std::ostringstream header;
-      const char        *axes = "xyz";
-      for (unsigned int d = 0; d < dim; ++d)
-        header << (d ? "," : "") << "X" << axes[d];
-      for (unsigned int d = 0; d < dim; ++d)
-        header << "," << axes[d];
-      header << ",gap,penetration_over_h,pressure";
-      for (unsigned int d = 0; d < dim; ++d)
-        header << ",force_" << axes[d];
-      header << ",weight";
-      if (reference_pressure)
-        header << ",reference_pressure";
-      boundary.write_csv(file, header.str(), rows);
+      boundary.write_csv(file,
+                         BoundaryNodes<dim>::profile_header(
+                           "gap,penetration_over_h,pressure", bool(reference_pressure)),
+                         rows);
     }
 
     template <int dim>

@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 
 namespace Signorini
 {
@@ -376,12 +375,9 @@ namespace Signorini
     }
 
     template <int dim>
-    std::vector<std::pair<unsigned int, unsigned int>>
-    TwoBodyContact<dim>::find_pairs(const std::vector<Point1>             &pts,
-                                    const VectorType                      &u,
-                                    const std::vector<IndicatorFace<dim>> &faces,
-                                    const double                           margin,
-                                    const bool positive_only) const
+    typename TwoBodyContact<dim>::FaceTree
+    TwoBodyContact<dim>::face_tree(const std::vector<IndicatorFace<dim>> &faces,
+                                   const double                           margin) const
     {
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
       boxes.reserve(faces.size());
@@ -392,7 +388,39 @@ namespace Signorini
             box.extend(margin * faces2[i].h);
           boxes.emplace_back(box, i);
         }
-      const auto tree = pack_rtree(boxes);
+      return pack_rtree(boxes);
+    }
+
+    template <int dim>
+    std::vector<Point<dim>>
+    TwoBodyContact<dim>::node_positions(const VectorType &u) const
+    {
+      std::vector<Point<dim>> x;
+      x.reserve(node_points.size());
+      for (const auto &p : node_points)
+        x.push_back(position(p, u));
+      return x;
+    }
+
+    template <int dim>
+    double
+    TwoBodyContact<dim>::active_threshold(const std::vector<double> &pressures) const
+    {
+      double largest = 0.;
+      for (const double p : pressures)
+        largest = std::max(largest, p);
+      return 1e-6 * Utilities::MPI::max(largest, dof_handler.get_communicator());
+    }
+
+    template <int dim>
+    std::vector<std::pair<unsigned int, unsigned int>>
+    TwoBodyContact<dim>::find_pairs(const std::vector<Point1>             &pts,
+                                    const VectorType                      &u,
+                                    const std::vector<IndicatorFace<dim>> &faces,
+                                    const double                           margin,
+                                    const bool positive_only) const
+    {
+      const auto tree = face_tree(faces, margin);
       std::vector<std::pair<unsigned int, unsigned int>>     pairs;
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       for (unsigned int k = 0; k < pts.size(); ++k)
@@ -453,10 +481,7 @@ namespace Signorini
     TwoBodyContact<dim>::admissible(const VectorType &u) const
     {
       const auto faces = current_faces(u);
-      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-      for (unsigned int i = 0; i < faces.size(); ++i)
-        boxes.emplace_back(faces[i].bounding_box(prm.stretch, prm.apex_depth), i);
-      const auto tree = pack_rtree(boxes);
+      const auto tree = face_tree(faces, 0.);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       bool                                                   ok = true;
       for (const auto *list : {&node_points, &points})
@@ -660,10 +685,7 @@ namespace Signorini
                                            const std::vector<IndicatorFace<dim>> &faces,
                                            std::vector<double> *depths) const
     {
-      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-      for (unsigned int i = 0; i < faces.size(); ++i)
-        boxes.emplace_back(faces[i].bounding_box(prm.stretch, prm.apex_depth), i);
-      const auto tree = pack_rtree(boxes);
+      const auto tree = face_tree(faces, 0.);
       double     worst = 0.;
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       if (depths)
@@ -718,28 +740,26 @@ namespace Signorini
       s.n_nodes = boundary.n_global();
       // Penetration at the nodes and, for the integral form, at the Gauss
       // points too.
-      std::vector<Point<dim>> x;
-      for (const auto &p : node_points)
-        x.push_back(position(p, u));
+      std::vector<Point<dim>> x = node_positions(u);
       if (prm.integral)
         for (const auto &p : points)
           x.push_back(position(p, u));
       s.max_penetration_ratio =
         Utilities::MPI::max(penetration_ratio(x, faces), comm);
-      const auto pressures = node_pressures(forces);
-      double     largest   = 0.;
-      for (const double p : pressures)
-        largest = std::max(largest, p);
-      largest = Utilities::MPI::max(largest, comm);
+      const auto   pressures = node_pressures(forces);
+      const double threshold = active_threshold(pressures);
       for (unsigned int k = 0; k < nodes().size(); ++k)
         {
           for (unsigned int d = 0; d < dim; ++d)
             s.total_force[d] += forces[k * dim + d];
-          if (pressures[k] > 1e-6 * largest)
-            ++s.n_active;
+          if (pressures[k] > threshold)
+            {
+              ++s.n_active;
+              s.max_pressure = std::max(s.max_pressure, pressures[k]);
+            }
         }
       s.n_active     = Utilities::MPI::sum(s.n_active, comm);
-      s.max_pressure = largest;
+      s.max_pressure = Utilities::MPI::max(s.max_pressure, comm);
       for (unsigned int d = 0; d < dim; ++d)
         s.total_force[d] = Utilities::MPI::sum(s.total_force[d], comm);
       return s;
@@ -759,26 +779,13 @@ namespace Signorini
     TwoBodyContact<dim>::gather_pressure(const VectorType          &u,
                                          const std::vector<double> &forces) const
     {
-      const auto pressures = node_pressures(forces);
-      double     largest   = 0.;
-      for (const double p : pressures)
-        largest = std::max(largest, p);
-      largest = Utilities::MPI::max(largest, dof_handler.get_communicator());
+      const auto   pressures = node_pressures(forces);
+      const double threshold = active_threshold(pressures);
       std::vector<std::pair<Point<dim>, double>> local;
       for (unsigned int k = 0; k < nodes().size(); ++k)
-        if (pressures[k] > 1e-6 * largest)
+        if (pressures[k] > threshold)
           local.emplace_back(position(node_points[k], u), pressures[k]);
-      std::vector<std::pair<Point<dim>, double>> all;
-      for (const auto &part :
-           Utilities::MPI::all_gather(dof_handler.get_communicator(), local))
-        all.insert(all.end(), part.begin(), part.end());
-      std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-        for (unsigned int d = 0; d < dim; ++d)
-          if (a.first[d] != b.first[d])
-            return a.first[d] < b.first[d];
-        return false;
-      });
-      return all;
+      return boundary.gather_sorted(local);
     }
 
     template <int dim>
@@ -789,13 +796,10 @@ namespace Signorini
       const std::vector<double>                       &forces,
       const std::function<double(const Point<dim> &)> &reference_pressure) const
     {
-      const auto              faces     = current_faces(u);
-      const auto              pressures = node_pressures(forces);
-      std::vector<Point<dim>> x;
-      for (const auto &p : node_points)
-        x.push_back(position(p, u));
+      const auto          pressures = node_pressures(forces);
+      const auto          x         = node_positions(u);
       std::vector<double> depths;
-      penetration_ratio(x, faces, &depths);
+      penetration_ratio(x, current_faces(u), &depths);
       std::vector<std::vector<double>> rows;
       for (unsigned int k = 0; k < nodes().size(); ++k)
         {
@@ -813,19 +817,10 @@ namespace Signorini
             row.push_back(reference_pressure(x[k]));
           rows.push_back(row);
         }
-      std::ostringstream header;
-      const char        *axes = "xyz";
-      for (unsigned int d = 0; d < dim; ++d)
-        header << (d ? "," : "") << "X" << axes[d];
-      for (unsigned int d = 0; d < dim; ++d)
-        header << "," << axes[d];
-      header << ",penetration,pressure";
-      for (unsigned int d = 0; d < dim; ++d)
-        header << ",force_" << axes[d];
-      header << ",weight";
-      if (reference_pressure)
-        header << ",reference_pressure";
-      boundary.write_csv(file, header.str(), rows);
+      boundary.write_csv(file,
+                         BoundaryNodes<dim>::profile_header("penetration,pressure",
+                                                            bool(reference_pressure)),
+                         rows);
     }
 
     template <int dim>
@@ -834,20 +829,13 @@ namespace Signorini
                                            const VectorType          &u,
                                            const std::vector<double> &forces)
     {
-      const auto              faces     = current_faces(u);
-      const auto              pressures = node_pressures(forces);
-      std::vector<Point<dim>> x;
-      for (const auto &p : node_points)
-        x.push_back(position(p, u));
+      const auto          pressures = node_pressures(forces);
       std::vector<double> depths;
-      penetration_ratio(x, faces, &depths);
-      double largest = 0.;
-      for (const double p : pressures)
-        largest = std::max(largest, p);
-      largest = Utilities::MPI::max(largest, dof_handler.get_communicator());
+      penetration_ratio(node_positions(u), current_faces(u), &depths);
+      const double        threshold = active_threshold(pressures);
       std::vector<double> active(pressures.size());
       for (unsigned int k = 0; k < pressures.size(); ++k)
-        active[k] = (pressures[k] > 1e-6 * largest ? 1. : 0.);
+        active[k] = (pressures[k] > threshold ? 1. : 0.);
       boundary.add_fields(data_out,
                           {"contact_pressure", "contact_penetration", "contact_active"},
                           {pressures, depths, active});

@@ -12,6 +12,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace Signorini
@@ -94,6 +95,18 @@ namespace Signorini
       write_csv(const std::string                      &file,
                 const std::string                      &header,
                 const std::vector<std::vector<double>> &rows) const;
+
+      /**
+       * The header of a contact profile: X.., x.., then @p middle, then
+       * force_x.., weight and, if @p reference, reference_pressure.
+       */
+      static std::string
+      profile_header(const std::string &middle, const bool reference);
+
+      /// (position, value) samples of every rank, on every rank, sorted by
+      /// position.
+      std::vector<std::pair<Point<dim>, double>>
+      gather_sorted(const std::vector<std::pair<Point<dim>, double>> &local) const;
 
     private:
       const DoFHandler<dim>         &dof_handler;

@@ -12,6 +12,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <functional>
 #include <set>
@@ -271,6 +272,21 @@ namespace Signorini
 
       Point<dim>
       position(const Point1 &p, const VectorType &u) const;
+
+      /// Current positions of the owned nodes of Gamma_C.
+      std::vector<Point<dim>>
+      node_positions(const VectorType &u) const;
+
+      using FaceTree = decltype(pack_rtree(
+        std::declval<std::vector<std::pair<BoundingBox<dim>, unsigned int>>>()));
+
+      /// R-tree of the faces' boxes, grown by @p margin face sizes.
+      FaceTree
+      face_tree(const std::vector<IndicatorFace<dim>> &faces, const double margin) const;
+
+      /// A node is active if its pressure exceeds 1e-6 of the largest.
+      double
+      active_threshold(const std::vector<double> &pressures) const;
 
       /// Current face geometry of every body 2 face (collective).
       std::vector<IndicatorFace<dim>>
