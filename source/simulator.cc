@@ -347,6 +347,9 @@ namespace Signorini
     const bool                 two_bodies = (report.contact_type == "two bodies");
     if (two_bodies)
       {
+        if (material_ids.size() < 2)
+          throw InputError("Contact > Type",
+                           "two bodies needs Body 2 > Active = true");
         contact_id = prm.get_integer("Contact boundary id");
         prm.enter_subsection("Two bodies");
         two_body_parameters.parse_parameters(prm);
@@ -359,9 +362,6 @@ namespace Signorini
             throw InputError("Contact > " + key,
                              "boundary id " + std::to_string(id) +
                                " does not exist in the mesh");
-        if (material_ids.size() < 2)
-          throw InputError("Contact > Type",
-                           "two bodies needs Body 2 > Active = true");
         report.foundation = std::string("body 2, ") +
                             (two_body_parameters.integral ? "integral" : "nodal") +
                             " form";

@@ -178,6 +178,40 @@ main()
            scene({{"@MATERIAL@", "set Incompressible = true"},
                   {"@EXTRA@", "subsection Solver\n  set Method = ipopt\nend"}}),
            out);
+  // Two-body contact input: body 2 is a second unit square (boundary ids
+  // 10-13 unless @OFFSET@ says otherwise).
+  auto two_bodies = [&](const std::string &offset, const std::string &contact_lines,
+                        const std::string &method) {
+    return scene({{"@EXTRA@",
+                   "subsection Body 2\n  set Active = true\n"
+                   "  subsection Geometry\n    set Boundary id offset = " + offset +
+                     "\n  end\nend\n"
+                     "subsection Contact\n  set Type = two bodies\n"
+                     "  set Contact boundary id = 2\n" + contact_lines +
+                     "end\nsubsection Solver\n  set Method = " + method + "\nend"}});
+  };
+  run_case("two_bodies_without_body_2",
+           scene({{"@EXTRA@", "subsection Contact\n  set Type = two bodies\n"
+                              "  set Contact boundary id = 2\nend\n"
+                              "subsection Solver\n  set Method = newton-penalty\nend"}}),
+           out);
+  run_case("two_bodies_target_not_in_mesh",
+           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 77\n  end\n",
+                      "newton-penalty"),
+           out);
+  run_case("two_bodies_target_on_body_1",
+           two_bodies("0", "  subsection Two bodies\n    set Target boundary id = 3\n  end\n",
+                      "newton-penalty"),
+           out);
+  run_case("two_bodies_zero_stretch",
+           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n"
+                            "    set Stretch = 0\n  end\n",
+                      "newton-penalty"),
+           out);
+  run_case("two_bodies_with_ipopt",
+           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n  end\n",
+                      "ipopt"),
+           out);
   std::ofstream("bad.opt") << "not_an_ipopt_option 3\n";
   run_case("unknown_ipopt_option",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\n"
