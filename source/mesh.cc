@@ -19,7 +19,7 @@ namespace Signorini
   {
     prm.declare_entry("Shape",
                       "rectangle",
-                      Patterns::Selection("rectangle|quarter disk|half disk"),
+                      Patterns::Selection("rectangle|quarter disk|half disk|die"),
                       "Built-in shape of the body (used when Mesh > Source = "
                       "generated). rectangle: a rectangle (2D) or box (3D) "
                       "with boundary ids 0/1 at x min/max, 2/3 at y min/max, "
@@ -28,7 +28,12 @@ namespace Signorini
                       "1 edge x = cx, 2 edge y = cy. half disk (2D): the "
                       "lower half {y <= cy}, ids 0 arc, 1 flat top. The "
                       "lowest point of a disk of center (0, R) touches y = 0 "
-                      "at the origin.");
+                      "at the origin. die (2D): the rectangle between the "
+                      "two corners whose bottom edge is replaced by a "
+                      "circular arc of height 'Arc sag' through the two "
+                      "lower corners; its lowest point is the middle of "
+                      "the lower edge. ids 0 the arc and both sides (the "
+                      "surface that can touch), 1 the top.");
     prm.declare_entry("Lower corner",
                       "0, 0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
@@ -47,6 +52,12 @@ namespace Signorini
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Disks: center of the full disk [length].");
     prm.declare_entry("Radius", "1", Patterns::Double(), "Disks: radius [length], > 0.");
+    prm.declare_entry("Arc sag",
+                      "0.3",
+                      Patterns::Double(),
+                      "Die: height of the circular arc at the bottom "
+                      "[length], > 0 and below the die's height; the "
+                      "radius is (w^2/4 + s^2)/(2 s) for width w and sag s.");
     prm.declare_entry("Boundary id offset",
                       "0",
                       Patterns::Integer(0, 200),
@@ -63,6 +74,7 @@ namespace Signorini
     const std::string s = prm.get("Shape");
     shape = (s == "rectangle"    ? Shape::rectangle :
              s == "quarter disk" ? Shape::quarter_disk :
+             s == "die"          ? Shape::die :
                                    Shape::half_disk);
     lower_corner       = get_list<double>(prm, "Lower corner", dim, context);
     upper_corner       = get_list<double>(prm, "Upper corner", dim, context);
@@ -70,8 +82,9 @@ namespace Signorini
     center             = get_list<double>(prm, "Center", dim, context);
     radius             = prm.get_double("Radius");
     boundary_id_offset = prm.get_integer("Boundary id offset");
+    arc_sag            = prm.get_double("Arc sag");
 
-    if (shape == Shape::rectangle)
+    if (shape == Shape::rectangle || shape == Shape::die)
       for (unsigned int d = 0; d < dim; ++d)
         if (!(upper_corner[d] > lower_corner[d]))
           throw InputError(context + " > Upper corner",
@@ -79,7 +92,18 @@ namespace Signorini
                            "direction, got lower = '" +
                              prm.get("Lower corner") + "', upper = '" +
                              prm.get("Upper corner") + "'");
-    if (shape != Shape::rectangle)
+    if (shape == Shape::die)
+      {
+        if (dim != 2)
+          throw InputError(context + " > Shape",
+                           "'die' is a 2D shape; in 3D use a Gmsh mesh");
+        if (!(arc_sag > 0.) || !(arc_sag < upper_corner[1] - lower_corner[1]))
+          throw InputError(context + " > Arc sag",
+                           "must be > 0 and below the die's height " +
+                             std::to_string(upper_corner[1] - lower_corner[1]) +
+                             ", got " + prm.get("Arc sag"));
+      }
+    else if (shape != Shape::rectangle)
       {
         if (dim != 2)
           throw InputError(context + " > Shape",
@@ -200,6 +224,54 @@ namespace Signorini
           tria.reset_all_manifolds();
           for (const auto &cell : tria.active_cell_iterators())
             cell->set_all_manifold_ids(numbers::flat_manifold_id);
+        }
+      else if (g.shape == BodyGeometry::Shape::die)
+        {
+          // A subdivided rectangle whose vertices are moved vertically so
+          // that its bottom row lies on the arc and the rows above are
+          // spread evenly between the arc and the top; the arc faces get a
+          // SphericalManifold and the cells a transfinite interpolation,
+          // so that refinement follows the arc.
+          Assert(dim == 2, ExcInternalError());
+          const Point<dim> lower = to_point<dim>(g.lower_corner);
+          const Point<dim> upper = to_point<dim>(g.upper_corner);
+          GridGenerator::subdivided_hyper_rectangle(tria, g.subdivisions, lower, upper,
+                                                    /*colorize=*/true);
+          tria.reset_all_manifolds();
+          const double half_width = 0.5 * (upper[0] - lower[0]);
+          const double radius =
+            (half_width * half_width + g.arc_sag * g.arc_sag) / (2. * g.arc_sag);
+          Point<dim> center;
+          center[0] = 0.5 * (lower[0] + upper[0]);
+          center[1] = lower[1] + radius;
+          const double height = upper[1] - lower[1];
+          GridTools::transform(
+            [&](const Point<dim> &p) {
+              const double dx     = p[0] - center[0];
+              const double bottom = center[1] - std::sqrt(radius * radius - dx * dx);
+              Point<dim>   q      = p;
+              q[1] = bottom + (p[1] - lower[1]) / height * (upper[1] - bottom);
+              return q;
+            },
+            tria);
+          const types::manifold_id arc_id         = 2 * body_index;
+          const types::manifold_id transfinite_id = 2 * body_index + 1;
+          for (const auto &cell : tria.active_cell_iterators())
+            {
+              cell->set_all_manifold_ids(transfinite_id);
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary())
+                  {
+                    // colorize: 0/1 the sides, 2 the bottom, 3 the top.
+                    if (face->boundary_id() == 2)
+                      face->set_manifold_id(arc_id);
+                    else
+                      face->set_manifold_id(numbers::flat_manifold_id);
+                    face->set_boundary_id(face->boundary_id() == 3 ? 1 : 0);
+                  }
+            }
+          manifolds.push_back({arc_id, false, center});
+          manifolds.push_back({transfinite_id, true, center});
         }
       else
         {

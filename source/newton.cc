@@ -57,12 +57,25 @@ namespace Signorini
                       "The line search starts from a step that moves no DoF "
                       "by more than this fraction of the scene's size "
                       "(bounding-box diameter); 0: no limit.");
+    prm.declare_entry("Increment tolerance",
+                      "1e-14",
+                      Patterns::Double(0.),
+                      "Converged also when the Newton correction moves no "
+                      "DoF by more than this fraction of the scene's size: "
+                      "the gradient is then at its round-off level (a state "
+                      "that is already in equilibrium, or a large penalty "
+                      "whose gradient cannot get smaller). Keep it near "
+                      "round-off (1e-14 is 50 machine epsilons): with a "
+                      "steep penalty a displacement of 1e-12 of the scene "
+                      "can still change the contact force by 1e-5; 0: "
+                      "off.");
   }
 
   void
   NewtonMinimizer::Parameters::parse_parameters(ParameterHandler &prm)
   {
-    max_iterations     = prm.get_integer("Maximum iterations");
+    max_iterations      = prm.get_integer("Maximum iterations");
+    increment_tolerance = prm.get_double("Increment tolerance");
     residual_tolerance = prm.get_double("Residual tolerance");
     absolute_tolerance = prm.get_double("Absolute tolerance");
     energy_tolerance   = prm.get_double("Energy tolerance");
@@ -85,7 +98,10 @@ namespace Signorini
   {}
 
   bool
-  NewtonMinimizer::descent_direction(const AffineConstraints<double> &constraints,
+  NewtonMinimizer::descent_direction(Objective                       &objective,
+                                     const VectorType                &u,
+                                     VectorType                      &ghosted,
+                                     const AffineConstraints<double> &constraints,
                                      MatrixType                      &hessian,
                                      const VectorType                &rhs,
                                      VectorType                      &d,
@@ -102,13 +118,35 @@ namespace Signorini
 
     LinearSolver::Info info;
     std::string        message;
-    bool ok = linear_solver.solve(hessian, d, rhs, info, message);
-    statistics.linear_iterations += info.iterations;
-    statistics.linear_fallbacks += info.used_fallback;
-    if (ok)
+    // Solve H d = -g with the current matrix: is d a descent direction?
+    auto solve_for_descent = [&]() {
+      const bool ok = linear_solver.solve(hessian, d, rhs, info, message);
+      statistics.linear_iterations += info.iterations;
+      statistics.linear_fallbacks += info.used_fallback;
+      if (!ok)
+        return false;
+      constraints.distribute(d);
+      return is_descent(d);
+    };
+    if (solve_for_descent())
+      return true;
+
+    // The objective's convex approximation of its non-convex parts (the
+    // projected contact Hessian), if it has one.
+    if (objective.set_convexified(true))
       {
-        constraints.distribute(d);
-        if (is_descent(d))
+        ++statistics.convexified_steps;
+        progress << "      Hessian not positive definite: convexified contact "
+                    "Hessian"
+                 << std::endl;
+        {
+          TimerOutput::Scope assembly(timer, "assembly");
+          VectorType         rhs_copy(rhs);
+          ghosted = u;
+          objective.evaluate(ghosted, constraints, &rhs_copy, &hessian);
+        }
+        objective.set_convexified(false);
+        if (solve_for_descent())
           return true;
       }
 
@@ -137,14 +175,8 @@ namespace Signorini
         hessian.compress(VectorOperation::insert);
         progress << "      Hessian not positive definite: shift tau = "
                  << tau << std::endl;
-        ok = linear_solver.solve(hessian, d, rhs, info, message);
-        statistics.linear_iterations += info.iterations;
-        if (ok)
-          {
-            constraints.distribute(d);
-            if (is_descent(d))
-              return true;
-          }
+        if (solve_for_descent())
+          return true;
       }
 
     // Steepest descent, scaled by the largest diagonal entry.
@@ -229,9 +261,27 @@ namespace Signorini
             return statistics;
           }
 
-        if (!descent_direction(constraints, hessian, rhs, d, statistics))
+        const unsigned int regularized_before =
+          statistics.regularized_steps + statistics.convexified_steps;
+        if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
+                               statistics))
           {
             statistics.reason = "no descent direction found";
+            return statistics;
+          }
+
+        // A correction below round-off of the geometry: nothing is left
+        // to gain (the gradient is round-off, whatever its units). Only a
+        // true Newton step says so.
+        if (statistics.regularized_steps + statistics.convexified_steps ==
+              regularized_before &&
+            parameters.increment_tolerance > 0. && length_scale > 0. &&
+            d.linfty_norm() <= parameters.increment_tolerance * length_scale)
+          {
+            progress << "      Newton correction " << std::scientific
+                     << std::setprecision(2) << d.linfty_norm()
+                     << " is below the increment tolerance" << std::endl;
+            statistics.converged = true;
             return statistics;
           }
 
@@ -279,6 +329,26 @@ namespace Signorini
               }
             ++statistics.backtracks;
             alpha *= parameters.backtrack_factor;
+          }
+        // Near round-off the energy cannot resolve the decrease a Newton
+        // step promises (-slope is within 1e3 x its noise): accept the
+        // step the contact model allows if it reduces the gradient instead.
+        if (!accepted && -slope <= 1e3 * noise)
+          {
+            ghosted = u;
+            alpha   = std::min(1., objective.max_step(ghosted, d));
+            trial   = u;
+            trial.add(alpha, d);
+            ghosted = trial;
+            VectorType trial_rhs(rhs);
+            trial_e = objective.evaluate(ghosted, constraints, &trial_rhs, nullptr);
+            if (trial_e.admissible && trial_rhs.l2_norm() < residual)
+              {
+                accepted = true;
+                progress << "      energy decrease below round-off: step "
+                            "accepted on the gradient norm"
+                         << std::endl;
+              }
           }
         if (!accepted)
           {

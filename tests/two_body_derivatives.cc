@@ -59,6 +59,8 @@ check(const unsigned int degree, const bool integral, std::ostream &out)
   parameters.target_boundary = 10 + 2 * (dim - 1) + 1; // body 2's top
   parameters.integral        = integral;
   parameters.gauss_points    = 3;
+  // the exact Hessian is checked here
+  parameters.hessian_mode = Contact::TwoBodyParameters::HessianMode::exact;
   Contact::TwoBodyContact<dim> contact(parameters, 2 * (dim - 1), dof, mapping);
   contact.setup(none, none);
 
@@ -140,11 +142,65 @@ check(const unsigned int degree, const bool integral, std::ostream &out)
     }
 }
 
+// The projection used by 'Hessian = projected': Q diag(lambda) Q^T must
+// become Q diag(max(lambda, 0)) Q^T, and a semidefinite matrix must stay.
+void
+check_projection(std::ostream &out)
+{
+  const unsigned int                     n = 10;
+  std::mt19937                           rng(5);
+  std::uniform_real_distribution<double> uniform(-1., 1.);
+  FullMatrix<double>                     Q(n, n);
+  for (unsigned int k = 0; k < n; ++k) // Gram-Schmidt on random columns
+    {
+      Vector<double> q(n);
+      for (unsigned int i = 0; i < n; ++i)
+        q(i) = uniform(rng);
+      for (unsigned int l = 0; l < k; ++l)
+        {
+          double dot = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            dot += q(i) * Q(i, l);
+          for (unsigned int i = 0; i < n; ++i)
+            q(i) -= dot * Q(i, l);
+        }
+      q /= q.l2_norm();
+      for (unsigned int i = 0; i < n; ++i)
+        Q(i, k) = q(i);
+    }
+  std::vector<double> lambda(n);
+  for (unsigned int k = 0; k < n; ++k)
+    lambda[k] = (k % 3 == 0 ? -1. : 1.) * (k + 1);
+  auto build = [&](const bool clip) {
+    FullMatrix<double> A(n, n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          A(i, j) += (clip ? std::max(lambda[k], 0.) : lambda[k]) * Q(i, k) * Q(j, k);
+    return A;
+  };
+  FullMatrix<double> A = build(false), expected = build(true);
+  Contact::project_to_positive_semidefinite(A);
+  A.add(-1., expected);
+  const double error_indefinite = A.frobenius_norm() / expected.frobenius_norm();
+  FullMatrix<double> B = expected;
+  Contact::project_to_positive_semidefinite(B);
+  B.add(-1., expected);
+  const double error_definite = B.frobenius_norm() / expected.frobenius_norm();
+  out << "projection: indefinite matrix -> positive part "
+      << (error_indefinite < 1e-12 ? "ok" : "FAIL")
+      << ", semidefinite matrix unchanged " << (error_definite < 1e-12 ? "ok" : "FAIL")
+      << "\n";
+  if (error_indefinite >= 1e-12 || error_definite >= 1e-12)
+    std::cerr << "projection errors " << error_indefinite << " " << error_definite << "\n";
+}
+
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out("output");
+  check_projection(out);
   for (const bool integral : {false, true})
     {
       check<2>(1, integral, out);

@@ -20,7 +20,10 @@ namespace Signorini
    *   4 z = z_min, 5 z = z_max;
    * - quarter disk (the lower right quarter x >= cx, y <= cy): 0 the arc,
    *   1 the edge x = cx (symmetry), 2 the edge y = cy (flat top);
-   * - half disk (the lower half y <= cy): 0 the arc, 1 the flat top y = cy.
+   * - half disk (the lower half y <= cy): 0 the arc, 1 the flat top y = cy;
+   * - die (a rectangle whose bottom edge is a circular arc of height
+   *   'Arc sag' through the lower corners): 0 the arc and both sides, 1 the
+   *   top.
    */
   struct BodyGeometry
   {
@@ -28,7 +31,8 @@ namespace Signorini
     {
       rectangle,
       quarter_disk,
-      half_disk
+      half_disk,
+      die
     };
 
     Shape                     shape = Shape::rectangle;
@@ -37,6 +41,7 @@ namespace Signorini
     std::vector<unsigned int> subdivisions;
     std::vector<double>       center;
     double                    radius             = 1.;
+    double                    arc_sag            = 0.3;
     unsigned int              boundary_id_offset = 0;
 
     static void

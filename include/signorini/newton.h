@@ -44,6 +44,20 @@ namespace Signorini
       (void)d;
       return std::numeric_limits<double>::infinity();
     }
+
+    /**
+     * Switch the Hessians of the following evaluations to a positive
+     * semidefinite approximation of the objective's non-convex parts (on)
+     * or back to the exact ones (off). Returns whether the objective has
+     * such an approximation; Newton uses it for a step where the exact
+     * Hessian gives no descent direction, before shifting the diagonal.
+     */
+    virtual bool
+    set_convexified(const bool on)
+    {
+      (void)on;
+      return false;
+    }
   };
 
   /**
@@ -78,6 +92,7 @@ namespace Signorini
       double       initial_shift      = 1e-6;
       unsigned int max_shifts         = 8;
       double       max_increment      = 0.1;
+      double       increment_tolerance = 1e-14;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -91,6 +106,7 @@ namespace Signorini
       unsigned int iterations           = 0;
       unsigned int backtracks           = 0;
       unsigned int regularized_steps    = 0;
+      unsigned int convexified_steps    = 0; // projected contact Hessian used
       unsigned int linear_iterations    = 0;
       unsigned int linear_fallbacks     = 0;
       double       residual             = 0.;
@@ -146,7 +162,10 @@ namespace Signorini
 
   private:
     bool
-    descent_direction(const AffineConstraints<double> &constraints,
+    descent_direction(Objective                       &objective,
+                      const VectorType                &u,
+                      VectorType                      &ghosted,
+                      const AffineConstraints<double> &constraints,
                       MatrixType                      &hessian,
                       const VectorType                &rhs,
                       VectorType                      &direction,

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
@@ -19,6 +20,26 @@ namespace Signorini
   namespace Contact
   {
     namespace bgi = boost::geometry::index;
+
+    void
+    project_to_positive_semidefinite(FullMatrix<double> &H)
+    {
+      const unsigned int        n = H.m();
+      LAPACKFullMatrix<double> A(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          A(i, j) = 0.5 * (H(i, j) + H(j, i));
+      Vector<double>     lambda;
+      FullMatrix<double> V;
+      const double       big = std::numeric_limits<double>::max();
+      A.compute_eigenvalues_symmetric(-big, big, 0., lambda, V);
+      H = 0.;
+      for (unsigned int k = 0; k < lambda.size(); ++k)
+        if (lambda(k) > 0.)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              H(i, j) += lambda(k) * V(i, k) * V(j, k);
+    }
 
     void
     TwoBodyParameters::declare_parameters(ParameterHandler &prm)
@@ -84,6 +105,22 @@ namespace Signorini
                         "more than this fraction of the thinnest layer where "
                         "Phi > 0 (a point that crosses the layer in one step "
                         "feels no force) [-]; > 0.");
+      prm.declare_entry("Hessian",
+                        "adaptive",
+                        Patterns::Selection("adaptive|exact|projected"),
+                        "The Hessian of each (point, face) term handed to "
+                        "Newton. exact: the true second derivative; Phi is "
+                        "a bump, so at large mu its negative curvature can "
+                        "make the Hessian indefinite, and Newton then falls "
+                        "back to diagonal shifts and steepest descent. "
+                        "projected: each pair's matrix with its negative "
+                        "eigenvalues set to zero (projected Newton): "
+                        "positive semidefinite, so the Newton step is a "
+                        "descent direction, but convergence near the "
+                        "solution is only linear. adaptive: exact, and "
+                        "projected for a Newton step whose exact Hessian "
+                        "gives no descent direction. The gradient is exact "
+                        "in every mode, so the solution is the same.");
     }
 
     void
@@ -97,6 +134,10 @@ namespace Signorini
       search_margin   = prm.get_double("Search margin");
       max_motion      = prm.get_double("Maximum motion");
       end_stretch     = prm.get_double("End stretch");
+      const std::string hessian = prm.get("Hessian");
+      hessian_mode = (hessian == "exact"     ? HessianMode::exact :
+                      hessian == "projected" ? HessianMode::projected :
+                                               HessianMode::adaptive);
       if (!(max_motion > 0.))
         throw InputError("Contact > Two bodies > Maximum motion",
                          "must be > 0, got " + prm.get("Maximum motion"));
@@ -484,20 +525,47 @@ namespace Signorini
       const auto tree = face_tree(faces, 0.);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       bool                                                   ok = true;
+      Vector<double>     g(IndicatorFace<dim>::n_variables);
+      FullMatrix<double> H(IndicatorFace<dim>::n_variables, IndicatorFace<dim>::n_variables);
       for (const auto *list : {&node_points, &points})
         for (const auto &p : *list)
           {
             const Point<dim> x = position(p, u);
             hits.clear();
             tree.query(bgi::intersects(x), std::back_inserter(hits));
-            bool   inside = false;
-            double phi    = 0.;
+            bool           inside = false;
+            double         phi    = 0.;
+            Tensor<1, dim> inward;
             for (const auto &hit : hits)
               {
-                inside = inside || faces[hit.second].in_cell(x);
-                phi += faces[hit.second].value(x, prm.stretch, prm.apex_depth);
+                const auto &face = faces[hit.second];
+                if (!inside && face.in_cell(x))
+                  {
+                    inside = true;
+                    for (unsigned int v = 0; v < n_face_vertices; ++v)
+                      inward += face.opposite[v] - face.face[v];
+                  }
+                phi += face.value(x, prm.stretch, prm.apex_depth);
               }
-            if (inside && !(phi > 0.))
+            if (!inside)
+              continue;
+            if (!(phi > 0.))
+              {
+                ok = false;
+                break;
+              }
+            // Past the crest of Phi, the penalty force -mu grad Phi pushes
+            // the point deeper (it would tunnel through the layer as mu
+            // grows): such a state is not one the model represents.
+            Tensor<1, dim> gradient;
+            for (const auto &hit : hits)
+              if (faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.)
+                {
+                  faces[hit.second].derivatives(x, prm.stretch, g, H, prm.apex_depth);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    gradient[c] += g(c);
+                }
+            if (gradient * inward < 0.)
               {
                 ok = false;
                 break;
@@ -626,6 +694,9 @@ namespace Signorini
           if (!rhs && !hessian && !forces)
             continue;
           face.derivatives(x, prm.stretch, g, H, prm.apex_depth);
+          if (hessian && (prm.hessian_mode == TwoBodyParameters::HessianMode::projected ||
+                          convexified))
+            project_to_positive_semidefinite(H);
           const unsigned int n1 = p.dofs.size();
           const unsigned int n  = n1 + n_target_dofs;
           // Local DoF j -> kernel variable var[j] with factor fac[j].
@@ -739,13 +810,23 @@ namespace Signorini
       Summary        s;
       s.n_nodes = boundary.n_global();
       // Penetration at the nodes and, for the integral form, at the Gauss
-      // points too.
+      // points too (reported); the continuation is steered by the points
+      // the penalty acts on (the Gauss points of the integral form: mu
+      // cannot push out a node between them, e.g. a corner of body 1).
       std::vector<Point<dim>> x = node_positions(u);
+      double                  gauss_ratio = 0.;
       if (prm.integral)
-        for (const auto &p : points)
-          x.push_back(position(p, u));
+        {
+          std::vector<Point<dim>> xg;
+          for (const auto &p : points)
+            xg.push_back(position(p, u));
+          gauss_ratio = penetration_ratio(xg, faces);
+        }
+      const double node_ratio = penetration_ratio(x, faces);
       s.max_penetration_ratio =
-        Utilities::MPI::max(penetration_ratio(x, faces), comm);
+        Utilities::MPI::max(std::max(node_ratio, gauss_ratio), comm);
+      s.max_penalised_penetration_ratio =
+        Utilities::MPI::max(prm.integral ? gauss_ratio : node_ratio, comm);
       const auto   pressures = node_pressures(forces);
       const double threshold = active_threshold(pressures);
       for (unsigned int k = 0; k < nodes().size(); ++k)
@@ -771,7 +852,7 @@ namespace Signorini
                                  const std::vector<double> &forces) const
     {
       const Summary s = summarize(u, forces);
-      return {s.max_penetration_ratio, s.n_active};
+      return {s.max_penalised_penetration_ratio, s.n_active};
     }
 
     template <int dim>

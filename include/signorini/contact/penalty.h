@@ -73,6 +73,18 @@ namespace Signorini
         return true;
       }
 
+      /**
+       * Make add_penalty() assemble a positive semidefinite approximation
+       * of the Hessian (on) or the exact one (off); returns whether the
+       * model has such an approximation and uses it. Default: none.
+       */
+      virtual bool
+      set_convexified(const bool on)
+      {
+        (void)on;
+        return false;
+      }
+
       /// Largest step length along the direction @p d (locally owned)
       /// from the ghosted @p u that the model allows (collective).
       virtual double
@@ -119,6 +131,12 @@ namespace Signorini
       max_step(const VectorType &u, const VectorType &d) override
       {
         return contact.max_step(u, d);
+      }
+
+      bool
+      set_convexified(const bool on) override
+      {
+        return contact.set_convexified(on);
       }
 
     private:

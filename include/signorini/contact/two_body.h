@@ -25,6 +25,14 @@ namespace Signorini
   namespace Contact
   {
     /// The "Contact > Two bodies" subsection.
+    /**
+     * Replace the symmetric matrix @p H by its positive semidefinite part
+     * sum_{lambda_k > 0} lambda_k v_k v_k^T (negative eigenvalues set to
+     * zero), as projected Newton methods do with non-convex penalty terms.
+     */
+    void
+    project_to_positive_semidefinite(FullMatrix<double> &H);
+
     struct TwoBodyParameters
     {
       types::boundary_id target_boundary = 0;
@@ -35,6 +43,15 @@ namespace Signorini
       double             search_margin   = 1.;
       double             max_motion      = 0.5;
       double             end_stretch     = 1.;
+      /// 'Hessian': which pair Hessians are projected (negative
+      /// eigenvalues clipped).
+      enum class HessianMode
+      {
+        exact,
+        projected,
+        adaptive
+      };
+      HessianMode hessian_mode = HessianMode::adaptive;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -103,7 +120,8 @@ namespace Signorini
         unsigned int   n_nodes  = 0;
         unsigned int   n_active = 0;
         Tensor<1, dim> total_force; // of body 2 on body 1
-        double         max_penetration_ratio = 0.;
+        double         max_penetration_ratio = 0.; // nodes and Gauss points
+        double         max_penalised_penetration_ratio = 0.; // points penalised
         double         max_pressure          = 0.;
       };
 
@@ -164,6 +182,16 @@ namespace Signorini
        */
       double
       max_step(const VectorType &u, const VectorType &d) const override;
+
+      /// With 'Hessian = adaptive': project the pair Hessians while on.
+      bool
+      set_convexified(const bool on) override
+      {
+        if (prm.hessian_mode != TwoBodyParameters::HessianMode::adaptive)
+          return false;
+        convexified = on;
+        return true;
+      }
 
       /**
        * False if a point of Gamma_C lies inside one of body 2's contact
@@ -332,6 +360,7 @@ namespace Signorini
 
       std::set<std::pair<unsigned int, unsigned int>> pattern;
       mutable PairStatistics                          stats;
+      bool                                            convexified = false;
       mutable AffineConstraints<double>               merged;
     };
   } // namespace Contact
