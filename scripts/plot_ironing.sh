@@ -29,10 +29,12 @@ for dir in "$@"; do
   reactions+="'$dir/reactions.csv' every ::1 using 1:(-\$3) with lines lw 2 lc rgb '$c' title '$name: vertical', "
   reactions+="'$dir/reactions.csv' every ::1 using 1:(-\$2) with lines lw 2 dt 2 lc rgb '$c' title '$name: horizontal', "
   header=$(head -1 "$dir/load_steps.csv")
-  col() { echo "$header" | tr ',' '\n' | grep -nx "$1" | cut -d: -f1; }
-  steps+="'$dir/load_steps.csv' every ::1 using $(col time):$(col newton_iterations) with impulses lw 1 lc rgb '$c' title '$name', "
+  col() { echo "$header" | tr ',' '\n' | { grep -nx "$1" || true; } | cut -d: -f1; }
+  # Iterations of the stage solver: Newton's or Ipopt's (Method = ipopt).
+  its=$(col newton_iterations); [ -n "$its" ] || its=$(col ipopt_iterations)
+  steps+="'$dir/load_steps.csv' every ::1 using $(col time):$its with impulses lw 1 lc rgb '$c' title '$name', "
   penetration+="'$dir/load_steps.csv' every ::1 using $(col time):$(col max_penetration_over_h) with points pt 7 ps 0.5 lc rgb '$c' title '$name', "
-  newton=$(awk -F, -v c="$(col newton_iterations)" 'NR > 1 { s += $c } END { print s }' "$dir/load_steps.csv")
+  newton=$(awk -F, -v c="$its" 'NR > 1 { s += $c } END { print s }' "$dir/load_steps.csv")
   awk -F, -v name="$name" -v newton="$newton" '
     NR == 1 { next }
     { n++ }

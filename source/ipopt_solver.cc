@@ -9,6 +9,7 @@
 #include <IpTNLP.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <fstream>
@@ -162,16 +163,21 @@ namespace Signorini
 
     Problem(IpoptSolver<dim>                &solver,
             const double                     time,
+            const double                     mu,
             const AffineConstraints<double> &target,
             VectorType                      &u,
             Result                          &result)
       : s(solver)
       , time(time)
+      , mu(mu)
       , target(target)
       , u(u)
       , result(result)
       , rhs(u.locally_owned_elements(), u.get_mpi_communicator())
       , start(u)
+      , accepted(u)
+      , step(u.locally_owned_elements(), u.get_mpi_communicator())
+      , owned(u.locally_owned_elements(), u.get_mpi_communicator())
     {}
 
     bool
@@ -227,10 +233,8 @@ namespace Signorini
     eval_f(Index, const Number *x, bool new_x, Number &obj_value) override
     {
       update(x, new_x);
-      TimerOutput::Scope scope(s.timer, "assembly");
-      const Evaluation   e =
-        s.energy.evaluate(u, time, *s.constraints, nullptr, nullptr);
-      obj_value = e.value;
+      const Evaluation e = evaluate(nullptr);
+      obj_value          = e.value;
       return e.admissible;
     }
 
@@ -238,8 +242,10 @@ namespace Signorini
     eval_grad_f(Index n, const Number *x, bool new_x, Number *grad_f) override
     {
       update(x, new_x);
-      TimerOutput::Scope scope(s.timer, "assembly");
-      const Evaluation e = s.energy.evaluate(u, time, *s.constraints, &rhs, nullptr);
+      // Ipopt asks for the gradient at accepted iterates only (trial
+      // points of its line search get eval_f): the origin of step limits.
+      accepted           = u;
+      const Evaluation e = evaluate(&rhs);
       for (Index i = 0; i < n; ++i)
         grad_f[i] = -rhs[s.free_dofs[i]];
       return e.admissible;
@@ -333,12 +339,23 @@ namespace Signorini
           return true;
         }
       update(x, new_x);
+      if (s.penalty && s.penalty->needs_new_pattern(u))
+        {
+          // The couplings left the pattern: assemble on a new one, give
+          // Ipopt what fits its structure for this iteration, and stop
+          // after it (intermediate_callback) to restart with the new one.
+          TimerOutput::Scope scope(s.timer, "sparsity pattern");
+          s.rebuild_pattern(u);
+          s.pattern_stale = true;
+        }
       TimerOutput::Scope scope(s.timer, "assembly");
       MatrixType        &H = *s.hessian;
       const Evaluation   e = s.energy.evaluate(u, time, *s.constraints, &rhs, &H);
       if (!e.admissible)
         return false;
       H *= obj_factor;
+      if (s.penalty)
+        s.penalty->add_penalty(u, obj_factor * mu, *s.constraints, nullptr, &H);
       std::vector<types::global_dof_index> node_dofs(dim);
       FullMatrix<double>                   local(dim, dim);
       for (unsigned int r = 0; r < s.contact_rows.size(); ++r)
@@ -367,20 +384,7 @@ namespace Signorini
             }
         }
       H.compress(VectorOperation::add);
-      // Read the lower triangle straight from the Epetra rows, at the
-      // positions recorded by setup().
-      const Epetra_CrsMatrix &epetra = H.trilinos_matrix();
-      std::size_t             k      = 0;
-      for (std::size_t v = 0; v < s.free_dofs.size(); ++v)
-        {
-          int     n_entries;
-          double *row_values;
-          int    *row_columns;
-          epetra.ExtractMyRowView(s.local_rows[v], n_entries, row_values, row_columns);
-          for (unsigned int p = s.row_starts[v]; p < s.row_starts[v + 1]; ++p)
-            values[k++] = row_values[s.row_positions[p]];
-        }
-      AssertThrow(k == s.hessian_rows.size(), ExcInternalError());
+      s.read_hessian(values);
       return true;
     }
 
@@ -412,6 +416,9 @@ namespace Signorini
                           const Ipopt::IpoptData *,
                           Ipopt::IpoptCalculatedQuantities *) override
     {
+      // A rebuilt sparsity pattern: stop here, solve() restarts Ipopt.
+      if (s.pattern_stale)
+        return false;
       std::ostringstream line;
       line << "    ipopt it " << std::setw(3) << iter << "  E "
            << std::scientific << std::setprecision(10) << obj_value
@@ -422,6 +429,51 @@ namespace Signorini
     }
 
   private:
+    /**
+     * E (and the penalty term mu P, if any) at the current state; minus
+     * the gradient into @p minus_gradient if given. Not admissible if
+     * either part says so or the value is not finite.
+     */
+    Evaluation
+    evaluate(VectorType *minus_gradient)
+    {
+      if (!within_step_limit())
+        {
+          Evaluation e;
+          e.admissible = false;
+          return e;
+        }
+      TimerOutput::Scope scope(s.timer, "assembly");
+      Evaluation         e =
+        s.energy.evaluate(u, time, *s.constraints, minus_gradient, nullptr);
+      if (!e.admissible || !s.penalty)
+        return e;
+      if (!s.penalty->admissible(u))
+        {
+          e.admissible = false;
+          return e;
+        }
+      e.value +=
+        s.penalty->add_penalty(u, mu, *s.constraints, minus_gradient, nullptr);
+      e.admissible = std::isfinite(e.value);
+      return e;
+    }
+
+    /// Whether the current state is within the step limits from the last
+    /// accepted iterate (set_step_limit()).
+    bool
+    within_step_limit()
+    {
+      if (!s.penalty || !(s.max_increment > 0.))
+        return true;
+      owned = u;
+      step  = accepted;
+      step.sadd(-1., 1., owned);
+      if (step.linfty_norm() > s.max_increment)
+        return false;
+      return s.penalty->max_step(accepted, step) >= 1. - 1e-12;
+    }
+
     void
     update(const Number *x, const bool new_x)
     {
@@ -445,11 +497,14 @@ namespace Signorini
 
     IpoptSolver<dim>                &s;
     const double                     time;
+    const double                     mu;
     const AffineConstraints<double> &target;
     VectorType                      &u;
     Result                          &result;
     VectorType                       rhs;
     const VectorType                 start;
+    VectorType                       accepted; // last accepted iterate
+    VectorType                       step, owned; // work vectors (owned)
     bool                             initialized = false;
   };
 
@@ -541,12 +596,41 @@ namespace Signorini
           }
       }
 
+    setup_hessian_structure();
+    warm = false;
+    last_lambda.clear();
+
+    // Check the options now, before any output exists; the application
+    // that writes ipopt.out is made at the first solve.
+    create_application(false);
+  }
+
+  template <int dim>
+  void
+  IpoptSolver<dim>::set_penalty(Contact::PenaltyTerm<dim> *term,
+                                const PatternBuilder      &rebuild)
+  {
+    penalty         = term;
+    rebuild_pattern = rebuild;
+  }
+
+  template <int dim>
+  void
+  IpoptSolver<dim>::set_step_limit(const double limit)
+  {
+    max_increment = limit;
+  }
+
+  template <int dim>
+  void
+  IpoptSolver<dim>::setup_hessian_structure()
+  {
     hessian_rows.clear();
     hessian_cols.clear();
     local_rows.clear();
     row_starts.assign(1, 0);
     row_positions.clear();
-    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    const Epetra_CrsMatrix &epetra = hessian->trilinos_matrix();
     for (std::size_t v = 0; v < free_dofs.size(); ++v)
       {
         local_rows.push_back(epetra.RowMap().LID(static_cast<int>(free_dofs[v])));
@@ -566,12 +650,55 @@ namespace Signorini
           }
         row_starts.push_back(row_positions.size());
       }
-    warm = false;
-    last_lambda.clear();
+    pattern_stale = false;
+  }
 
-    // Check the options now, before any output exists; the application
-    // that writes ipopt.out is made at the first solve.
-    create_application(false);
+  template <int dim>
+  void
+  IpoptSolver<dim>::read_hessian(double *values) const
+  {
+    const Epetra_CrsMatrix &epetra = hessian->trilinos_matrix();
+    std::size_t             k      = 0;
+    if (!pattern_stale)
+      {
+        // Straight from the Epetra rows, at the positions recorded by
+        // setup_hessian_structure().
+        for (std::size_t v = 0; v < free_dofs.size(); ++v)
+          {
+            int     n_entries;
+            double *row_values;
+            int    *row_columns;
+            epetra.ExtractMyRowView(local_rows[v], n_entries, row_values, row_columns);
+            for (unsigned int p = row_starts[v]; p < row_starts[v + 1]; ++p)
+              values[k++] = row_values[row_positions[p]];
+          }
+      }
+    else
+      {
+        // The matrix has a new pattern: look every entry up by column.
+        std::map<int, double> row;
+        for (std::size_t v = 0; v < free_dofs.size(); ++v)
+          {
+            int     n_entries;
+            double *row_values;
+            int    *row_columns;
+            epetra.ExtractMyRowView(epetra.RowMap().LID(static_cast<int>(free_dofs[v])),
+                                    n_entries, row_values, row_columns);
+            row.clear();
+            for (int p = 0; p < n_entries; ++p)
+              {
+                const int c = variable_of[epetra.ColMap().GID(row_columns[p])];
+                if (c >= 0)
+                  row[c] = row_values[p];
+              }
+            for (unsigned int p = row_starts[v]; p < row_starts[v + 1]; ++p)
+              {
+                const auto it = row.find(hessian_cols[k]);
+                values[k++]   = (it == row.end() ? 0. : it->second);
+              }
+          }
+      }
+    AssertThrow(k == hessian_rows.size(), ExcInternalError());
   }
 
   template <int dim>
@@ -588,6 +715,8 @@ namespace Signorini
     options->SetIntegerValue("print_level", parameters.print_level);
     options->SetStringValue("hessian_approximation", "exact");
     options->SetStringValue("sb", "yes");
+    // A deterministic ordering (see Linear solver > MUMPS ordering).
+    options->SetIntegerValue("mumps_pivot_order", parameters.mumps_pivot_order);
     if (with_output_file && parameters.file_print_level > 0)
       {
         options->SetStringValue("output_file", output_directory + "/ipopt.out");
@@ -635,7 +764,8 @@ namespace Signorini
   typename IpoptSolver<dim>::Result
   IpoptSolver<dim>::solve(const double                     time,
                           const AffineConstraints<double> &target,
-                          VectorType                      &u)
+                          VectorType                      &u,
+                          const double                     mu)
   {
     Result result;
     if (!application_has_file)
@@ -655,13 +785,36 @@ namespace Signorini
                  std::filesystem::file_size(output_directory + "/ipopt.out") :
                  0;
 
-    Ipopt::SmartPtr<Ipopt::TNLP> problem = new Problem(*this, time, target, u, result);
-    const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(problem);
+    Ipopt::ApplicationReturnStatus status;
+    for (unsigned int attempt = 0;; ++attempt)
+      {
+        if (penalty && !pattern_stale && penalty->needs_new_pattern(u))
+          {
+            TimerOutput::Scope scope(timer, "sparsity pattern");
+            rebuild_pattern(u);
+            pattern_stale = true;
+          }
+        if (pattern_stale)
+          {
+            setup_hessian_structure();
+            ++result.pattern_rebuilds;
+          }
+        Ipopt::SmartPtr<Ipopt::TNLP> problem =
+          new Problem(*this, time, mu, target, u, result);
+        status = app->OptimizeTNLP(problem);
+        if (IsValid(app->Statistics()))
+          result.iterations += app->Statistics()->IterationCount();
+        // Stopped for a new sparsity pattern: go on from the last iterate
+        // (finalize_solution() left it in u), with a bound on restarts.
+        if (!(status == Ipopt::User_Requested_Stop && pattern_stale && attempt < 20))
+          break;
+        progress << "    ipopt: contact couplings changed, restarting with a "
+                    "new sparsity pattern"
+                 << std::endl;
+      }
     result.status  = status_name(status);
     result.success = (status == Ipopt::Solve_Succeeded ||
                       status == Ipopt::Solved_To_Acceptable_Level);
-    if (IsValid(app->Statistics()))
-      result.iterations = app->Statistics()->IterationCount();
     if (result.success)
       warm = true;
 

@@ -5,7 +5,14 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_minres.h>
 #include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_solver.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <cmath>
+#include <memory>
 
 namespace Signorini
 {
@@ -32,6 +39,20 @@ namespace Signorini
                       "runs on one MPI rank only; KLU gathers the matrix and "
                       "works with any number of ranks. auto: MUMPS on one "
                       "rank, KLU on several.");
+    prm.declare_entry("MUMPS ordering",
+                      "pord",
+                      Patterns::Selection("pord|amf|amd|qamd|scotch|auto"),
+                      "Fill-reducing ordering of MUMPS (Amesos_Mumps and "
+                      "Ipopt's linear solver; MUMPS ICNTL(7)). Debian's "
+                      "MUMPS has no METIS, and its automatic choice (auto) "
+                      "takes SCOTCH for larger matrices, whose orderings "
+                      "differ from run to run: two runs of one scene then "
+                      "drift apart at round-off level and may even take "
+                      "different load steps. pord (nested dissection), amf, "
+                      "amd and qamd are deterministic; on the 7330-DoF "
+                      "Hertz-on-block matrix pord gives 713k entries in "
+                      "the factors, amf 726k, amd and qamd 751k, scotch "
+                      "780k.");
     prm.declare_entry("Relative tolerance",
                       "1e-8",
                       Patterns::Double(0., 1.),
@@ -71,6 +92,13 @@ namespace Signorini
                        "Amesos_Mumps runs on one MPI rank only (Debian's "
                        "Trilinos uses the sequential MUMPS); this run has " +
                          std::to_string(ranks) + " ranks: use Amesos_Klu or auto");
+    const std::string ordering = prm.get("MUMPS ordering");
+    mumps_ordering = (ordering == "amd"    ? 0 :
+                      ordering == "amf"    ? 2 :
+                      ordering == "scotch" ? 3 :
+                      ordering == "pord"   ? 4 :
+                      ordering == "qamd"   ? 6 :
+                                             7);
     relative_tolerance    = prm.get_double("Relative tolerance");
     max_iterations        = prm.get_integer("Maximum iterations");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
@@ -110,13 +138,43 @@ namespace Signorini
                              const VectorType &b,
                              std::string      &message) const
   {
+    // Amesos directly rather than through TrilinosWrappers::SolverDirect,
+    // which passes no parameters to the solver: MUMPS' automatic ordering
+    // (ICNTL(7) = 7) picks SCOTCH for larger matrices, whose choices
+    // differ from run to run, so that two runs of one scene drift apart at
+    // round-off level (7330 DoFs: from the 5th Newton iteration) and may
+    // take different load steps ('MUMPS ordering').
     try
       {
-        SolverControl                            control(1, 0.);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-          false, parameters.direct_solver);
-        TrilinosWrappers::SolverDirect solver(control, data);
-        solver.solve(H, x, b);
+        Epetra_LinearProblem problem(
+          const_cast<Epetra_CrsMatrix *>(&H.trilinos_matrix()),
+          &x.trilinos_vector(),
+          const_cast<Epetra_MultiVector *>(
+            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+        Amesos                             factory;
+        std::unique_ptr<Amesos_BaseSolver> solver(
+          factory.Create(parameters.direct_solver.c_str(), problem));
+        if (!solver)
+          {
+            message = "direct solver " + parameters.direct_solver +
+                      " is not available in this Trilinos";
+            return false;
+          }
+        Teuchos::ParameterList list;
+        list.sublist("mumps").set("ICNTL(7)", parameters.mumps_ordering);
+
+        solver->SetParameters(list);
+        int error = solver->SymbolicFactorization();
+        if (error == 0)
+          error = solver->NumericFactorization();
+        if (error == 0)
+          error = solver->Solve();
+        if (error != 0)
+          {
+            message = "direct solver " + parameters.direct_solver +
+                      " failed with Amesos error " + std::to_string(error);
+            return false;
+          }
       }
     catch (const std::exception &e)
       {

@@ -409,8 +409,9 @@ namespace Signorini
     }
     if (!e.admissible)
       {
-        reason = "the predictor step inverts elements (min J = " +
-                 std::to_string(e.min_J) + ")";
+        reason = "the predictor step leads to an inadmissible state (min J = " +
+                 std::to_string(e.min_J) +
+                 (e.min_J > 0. ? "; the contact model rejects it" : "") + ")";
         return false;
       }
     u = trial;

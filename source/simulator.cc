@@ -116,7 +116,9 @@ namespace Signorini
                       "<-g_k>^3 with penalty continuation (contact; runs "
                       "with MPI). ipopt: the interior point optimiser with "
                       "the contact and incompressibility constraints and "
-                      "exact derivatives (one MPI rank).");
+                      "exact derivatives (one MPI rank); for two-body "
+                      "contact it minimises each stage of the penalty "
+                      "continuation without constraints.");
     prm.enter_subsection("Newton");
     NewtonMinimizer::Parameters::declare_parameters(prm);
     prm.leave_subsection();
@@ -285,6 +287,7 @@ namespace Signorini
     prm.enter_subsection("Linear solver");
     linear_parameters.parse_parameters(prm);
     report.linear_solver = linear_parameters.name();
+    ipopt_parameters.mumps_pivot_order = linear_parameters.mumps_ordering;
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -391,10 +394,6 @@ namespace Signorini
                          report.contact_type +
                          "), which Method = newton cannot handle: use "
                          "newton-penalty");
-    if (method == "ipopt" && two_bodies)
-      throw InputError("Solver > Method",
-                       "two-body contact is solved by penalty continuation: "
-                       "use newton-penalty");
     if (method == "newton-penalty" && !foundation && !two_bodies)
       throw InputError("Solver > Method",
                        "newton-penalty needs contact (Contact > Type); the "
@@ -526,6 +525,9 @@ namespace Signorini
                                                    progress,
                                                    *timer);
         ipopt->setup(homogeneous_constraints, hessian);
+        if (two_body)
+          ipopt->set_penalty(two_body.get(),
+                             [this](const VectorType &u) { build_matrix(u); });
       }
 
     std::vector<std::vector<bool>> modes;
@@ -625,7 +627,7 @@ namespace Signorini
                                   NewtonMinimizer::Statistics &stats,
                                   Report::Step                &record)
   {
-    if (method == "ipopt")
+    if (method == "ipopt" && !two_body)
       {
         solution_ghosted = solution;
         const AffineConstraints<double> target = boundary_constraints(time, false);
@@ -666,11 +668,14 @@ namespace Signorini
         TimerOutput::Scope scope(*timer, "sparsity pattern");
         build_matrix(u);
       };
-    if (method == "newton-penalty")
+    // The predictor's objective: G_mu with the first stage's penalty for
+    // contact (with either stage solver), so that its step is checked
+    // against the contact's admissibility too.
+    if (method == "newton")
+      objective = std::make_unique<EnergyObjective<dim>>(*energy, time);
+    else
       objective = std::make_unique<Contact::PenaltyObjective<dim>>(
         *energy, *penalty_term, time, mu_start, rebuild);
-    else
-      objective = std::make_unique<EnergyObjective<dim>>(*energy, time);
     if (has_prescribed_motion)
       {
         solution_ghosted = solution;
@@ -690,12 +695,40 @@ namespace Signorini
         return stats.converged;
       }
 
+    // Each stage of the continuation: Newton on G_mu, or Ipopt as an
+    // unconstrained minimiser of G_mu (two-body contact, Method = ipopt).
+    Contact::StageSolver solve_stage = [&](const double mu, VectorType &u) {
+      Contact::PenaltyObjective<dim> stage(*energy, *penalty_term, time, mu, rebuild);
+      return newton.minimize(stage, homogeneous_constraints, u,
+                             solution_ghosted, hessian, rhs);
+    };
+    if (method == "ipopt")
+      {
+        const AffineConstraints<double> target = boundary_constraints(time, false);
+        solve_stage = [&, target](const double mu, VectorType &u) {
+          solution_ghosted = u;
+          ipopt->set_step_limit(newton_parameters.max_increment * scene_size);
+          const auto result = ipopt->solve(time, target, solution_ghosted, mu);
+          u                 = solution_ghosted;
+          NewtonMinimizer::Statistics s;
+          s.converged  = result.success;
+          s.iterations = result.iterations;
+          if (!result.success)
+            s.reason = "Ipopt returned " + result.status + " after " +
+                       std::to_string(result.iterations) + " iterations";
+          else
+            s.evaluation = energy->evaluate(solution_ghosted, time,
+                                            homogeneous_constraints, nullptr,
+                                            nullptr);
+          record.solver_status = result.status;
+          return s;
+        };
+      }
     const Contact::ContinuationResult result =
-      Contact::penalty_continuation(continuation_parameters, newton, *energy,
+      Contact::penalty_continuation(continuation_parameters, solve_stage, *energy,
                                     *penalty_term, time, mu_start,
                                     homogeneous_constraints, solution,
-                                    solution_ghosted, hessian, rhs, progress,
-                                    rebuild);
+                                    solution_ghosted, progress);
     stats            = result.last;
     stats.iterations = result.newton_iterations;
     stats.converged  = result.converged;
@@ -971,8 +1004,10 @@ namespace Signorini
     j["final time"]              = report.final_time;
     j["load steps"]              = static_cast<unsigned int>(report.steps.size());
     j["step cuts"]               = report.step_cuts;
-    j[method == "ipopt" ? "ipopt iterations" : "newton iterations"] =
-      report.newton_iterations;
+    // Iterations are Newton's or Ipopt's (also per penalty stage).
+    const std::string iterations =
+      method == "ipopt" ? "ipopt iterations" : "newton iterations";
+    j[iterations] = report.newton_iterations;
     if (contact || two_body)
       {
         Json &c                 = j["contact"];
@@ -1025,8 +1060,7 @@ namespace Signorini
       {
         Json o = Json::object();
         o["time"]              = s.time;
-        o[method == "ipopt" ? "ipopt iterations" : "newton iterations"] =
-          s.newton_iterations;
+        o[iterations]          = s.newton_iterations;
         o["backtracks"]        = s.backtracks;
         o["regularized steps"] = s.regularized;
         o["linear iterations"] = s.linear_iterations;
@@ -1043,7 +1077,7 @@ namespace Signorini
               {
                 Json so                 = Json::object();
                 so["mu"]                = st.mu;
-                so["newton iterations"] = st.newton_iterations;
+                so[iterations]          = st.newton_iterations;
                 so["max penetration over h"] = st.penetration_ratio;
                 stages.push_back(so);
               }

@@ -12,49 +12,17 @@
 //   (full run: 2.9% on average, largest jump 5.2%);
 // - the penetration the continuation aims at (1e-2 of h) is met.
 
+#include "run_output.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <map>
-#include <sstream>
 #include <string>
-#include <vector>
 
-namespace
-{
-  std::vector<std::map<std::string, double>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                              in(file);
-    std::string                                line;
-    std::vector<std::string>                   names;
-    std::vector<std::map<std::string, double>> rows;
-    if (!std::getline(in, line))
-      return rows;
-    std::stringstream header(line);
-    for (std::string name; std::getline(header, name, ',');)
-      names.push_back(name);
-    while (std::getline(in, line))
-      {
-        std::stringstream                row(line);
-        std::map<std::string, double>    values;
-        std::string                      cell;
-        for (unsigned int i = 0; i < names.size() && std::getline(row, cell, ','); ++i)
-          values[names[i]] = std::atof(cell.c_str());
-        rows.push_back(values);
-      }
-    return rows;
-  }
-
-  const char *
-  verdict(const bool ok)
-  {
-    return ok ? "yes" : "NO";
-  }
-} // namespace
+using RunOutput::read_csv;
+using RunOutput::verdict;
 
 int
 main()

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/contact/penalty.h>
 #include <signorini/contact/rigid_foundation.h>
 #include <signorini/energy_functional.h>
 #include <signorini/incompressibility.h>
@@ -11,6 +12,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -35,6 +37,16 @@ namespace Signorini
    * The Hessian's sparsity is the finite element pattern restricted to
    * the free DoFs (lower triangle), built once per mesh.
    *
+   * With a penalty term (set_penalty(): two-body contact) the objective
+   * is G_mu = E + mu P and Ipopt is an unconstrained minimiser of each
+   * stage of the penalty continuation, as in the poster: its inertia
+   * correction regularises the Hessian where mu grad^2 P is indefinite,
+   * and a state the term calls inadmissible is reported to Ipopt as a
+   * failed evaluation, which makes its line search step back. When the
+   * term's couplings leave the Hessian's sparsity pattern, the pattern is
+   * rebuilt at that state, Ipopt is stopped after the iteration and
+   * restarted from its last iterate with the new structure.
+   *
    * Ipopt runs on one MPI rank. Between load steps the solver warm-starts
    * from the previous primal and dual solution.
    */
@@ -54,6 +66,8 @@ namespace Signorini
       double       derivative_test_perturbation = 1e-3;
       bool         warm_start      = true;
       double       warm_start_mu   = 1e-6;
+      /// Ipopt's mumps_pivot_order (set from Linear solver > MUMPS ordering).
+      int          mumps_pivot_order = 4;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -69,7 +83,10 @@ namespace Signorini
       std::vector<double> contact_forces;      // per contact node (>= 0)
       std::vector<double> pressure_multipliers; // per constrained cell
       int                 derivative_test_errors = -1; // -1: not run
+      unsigned int        pattern_rebuilds = 0; // restarts for a new pattern
     };
+
+    using PatternBuilder = std::function<void(const VectorType &)>;
 
     IpoptSolver(const Parameters                  &parameters,
                 const DoFHandler<dim>             &dof_handler,
@@ -90,15 +107,39 @@ namespace Signorini
     setup(const AffineConstraints<double> &constraints, MatrixType &hessian);
 
     /**
+     * Add mu P(U) of @p term to the objective of every following solve
+     * (mu is solve()'s argument). @p rebuild_pattern re-initialises the
+     * matrix given to setup() with the couplings the term needs at a
+     * state.
+     */
+    void
+    set_penalty(Contact::PenaltyTerm<dim> *term,
+                const PatternBuilder      &rebuild_pattern);
+
+    /**
+     * With a penalty term: a trial point that moves a DoF by more than
+     * @p max_increment from the last accepted iterate, or further than
+     * the term's max_step() allows (a body 1 point must not cross body
+     * 2's thin penalty layer in one step), counts as a failed evaluation,
+     * so Ipopt's line search steps back. A body held only by contact has
+     * a singular Hessian until it touches, and Ipopt's full step would
+     * carry it through the other body. 0: no limit.
+     */
+    void
+    set_step_limit(const double max_increment);
+
+    /**
      * Minimise at load time @p time. @p target: the Dirichlet values and
      * hanging nodes at this time (inhomogeneous constraints, used to
      * complete each iterate). @p u (ghosted, serial) holds the start and
-     * receives the last iterate, whether or not Ipopt succeeded.
+     * receives the last iterate, whether or not Ipopt succeeded. @p mu:
+     * the penalty factor, if set_penalty() was called.
      */
     Result
     solve(const double                     time,
           const AffineConstraints<double> &target,
-          VectorType                      &u);
+          VectorType                      &u,
+          const double                     mu = 0.);
 
     class Problem;
 
@@ -112,11 +153,25 @@ namespace Signorini
                   const double                  value,
                   std::map<int, double>        &row) const;
 
+    /// Record the lower-triangle Hessian structure of the matrix's pattern.
+    void
+    setup_hessian_structure();
+
+    /// Copy the matrix's lower triangle into Ipopt's @p values, in the
+    /// structure recorded last (entries the matrix lacks are zero, entries
+    /// outside the structure are dropped if the pattern was rebuilt).
+    void
+    read_hessian(double *values) const;
+
     Parameters                           parameters;
     const DoFHandler<dim>               &dof_handler;
     const EnergyFunctional<dim>         &energy;
     const Contact::RigidFoundation<dim> *contact;
     const Incompressibility<dim>        *incompressibility;
+    Contact::PenaltyTerm<dim>           *penalty = nullptr;
+    PatternBuilder                       rebuild_pattern;
+    bool                                 pattern_stale = false;
+    double                               max_increment = 0.;
     std::string                          output_directory;
     ConditionalOStream                  &progress;
     TimerOutput                         &timer;

@@ -32,6 +32,9 @@ namespace Signorini
       };
       Type         type = Type::direct;
       std::string  direct_solver = "Amesos_Klu"; // "auto" is resolved when parsed
+      /// MUMPS' fill-reducing ordering, as its ICNTL(7) code (also given
+      /// to Ipopt's MUMPS as mumps_pivot_order).
+      int          mumps_ordering = 4;
       double       relative_tolerance = 1e-8;
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;

@@ -124,7 +124,7 @@ namespace Signorini
     template <int dim>
     ContinuationResult
     penalty_continuation(const ContinuationParameters    &parameters,
-                         NewtonMinimizer                 &newton,
+                         const StageSolver               &solve_stage,
                          const EnergyFunctional<dim>     &energy,
                          PenaltyTerm<dim>                &contact,
                          const double                     time,
@@ -132,11 +132,7 @@ namespace Signorini
                          const AffineConstraints<double> &constraints,
                          VectorType                      &u,
                          VectorType                      &ghosted,
-                         MatrixType                      &hessian,
-                         VectorType                      &rhs,
-                         ConditionalOStream              &progress,
-                         const typename PenaltyObjective<dim>::PatternBuilder
-                           &rebuild_pattern)
+                         ConditionalOStream              &progress)
     {
       ContinuationResult result;
       double             mu = mu_start;
@@ -159,7 +155,7 @@ namespace Signorini
                   start.add(factor, u);
                   start.add(-factor, previous);
                   ghosted = start;
-                  PenaltyObjective<dim> check(energy, contact, time, mu, rebuild_pattern);
+                  PenaltyObjective<dim> check(energy, contact, time, mu);
                   if (!check.evaluate(ghosted, constraints, nullptr, nullptr)
                          .admissible)
                     start = u;
@@ -171,9 +167,7 @@ namespace Signorini
           progress << "  stage " << s + 1 << ": mu = " << std::scientific
                    << std::setprecision(3) << mu << std::defaultfloat
                    << std::endl;
-          PenaltyObjective<dim> objective(energy, contact, time, mu, rebuild_pattern);
-          result.last = newton.minimize(objective, constraints, u, ghosted,
-                                        hessian, rhs);
+          result.last = solve_stage(mu, u);
           result.newton_iterations += result.last.iterations;
           ghosted = u;
           contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
@@ -215,20 +209,16 @@ namespace Signorini
     template class PenaltyObjective<2>;
     template class PenaltyObjective<3>;
     template ContinuationResult
-    penalty_continuation<2>(const ContinuationParameters &, NewtonMinimizer &,
-                            const EnergyFunctional<2> &,
-                            PenaltyTerm<2> &, const double,
-                            const double, const AffineConstraints<double> &,
-                            VectorType &, VectorType &, MatrixType &,
-                            VectorType &, ConditionalOStream &,
-                            const PenaltyObjective<2>::PatternBuilder &);
+    penalty_continuation<2>(const ContinuationParameters &, const StageSolver &,
+                            const EnergyFunctional<2> &, PenaltyTerm<2> &,
+                            const double, const double,
+                            const AffineConstraints<double> &, VectorType &,
+                            VectorType &, ConditionalOStream &);
     template ContinuationResult
-    penalty_continuation<3>(const ContinuationParameters &, NewtonMinimizer &,
-                            const EnergyFunctional<3> &,
-                            PenaltyTerm<3> &, const double,
-                            const double, const AffineConstraints<double> &,
-                            VectorType &, VectorType &, MatrixType &,
-                            VectorType &, ConditionalOStream &,
-                            const PenaltyObjective<3>::PatternBuilder &);
+    penalty_continuation<3>(const ContinuationParameters &, const StageSolver &,
+                            const EnergyFunctional<3> &, PenaltyTerm<3> &,
+                            const double, const double,
+                            const AffineConstraints<double> &, VectorType &,
+                            VectorType &, ConditionalOStream &);
   } // namespace Contact
 } // namespace Signorini

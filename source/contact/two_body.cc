@@ -525,8 +525,9 @@ namespace Signorini
       const auto tree = face_tree(faces, 0.);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       bool                                                   ok = true;
-      Vector<double>     g(IndicatorFace<dim>::n_variables);
-      FullMatrix<double> H(IndicatorFace<dim>::n_variables, IndicatorFace<dim>::n_variables);
+      Vector<double>      g(IndicatorFace<dim>::n_variables);
+      FullMatrix<double>  H(IndicatorFace<dim>::n_variables, IndicatorFace<dim>::n_variables);
+      std::vector<double> values; // Phi of each hit face term
       for (const auto *list : {&node_points, &points})
         for (const auto &p : *list)
           {
@@ -536,6 +537,7 @@ namespace Signorini
             bool           inside = false;
             double         phi    = 0.;
             Tensor<1, dim> inward;
+            values.clear();
             for (const auto &hit : hits)
               {
                 const auto &face = faces[hit.second];
@@ -545,7 +547,8 @@ namespace Signorini
                     for (unsigned int v = 0; v < n_face_vertices; ++v)
                       inward += face.opposite[v] - face.face[v];
                   }
-                phi += face.value(x, prm.stretch, prm.apex_depth);
+                values.push_back(face.value(x, prm.stretch, prm.apex_depth));
+                phi += values.back();
               }
             if (!inside)
               continue;
@@ -558,10 +561,10 @@ namespace Signorini
             // the point deeper (it would tunnel through the layer as mu
             // grows): such a state is not one the model represents.
             Tensor<1, dim> gradient;
-            for (const auto &hit : hits)
-              if (faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.)
+            for (unsigned int k = 0; k < hits.size(); ++k)
+              if (values[k] > 0.)
                 {
-                  faces[hit.second].derivatives(x, prm.stretch, g, H, prm.apex_depth);
+                  faces[hits[k].second].derivatives(x, prm.stretch, g, H, prm.apex_depth);
                   for (unsigned int c = 0; c < dim; ++c)
                     gradient[c] += g(c);
                 }

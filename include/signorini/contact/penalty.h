@@ -197,14 +197,24 @@ namespace Signorini
     };
 
     /**
+     * Minimises G_mu from @p u (locally owned entries, satisfying the
+     * homogeneous constraints) and leaves the last accepted iterate in
+     * @p u: Newton with a line search, or Ipopt as an unconstrained
+     * minimiser (the poster's choice).
+     */
+    using StageSolver =
+      std::function<NewtonMinimizer::Statistics(const double mu, VectorType &u)>;
+
+    /**
      * Run the continuation for one load step at @p time from @p u, the
-     * first stage with @p mu_start. On return @p u holds the last
-     * converged stage (or the last iterate if a stage failed).
+     * first stage with @p mu_start, each stage solved by @p solve_stage.
+     * On return @p u holds the last converged stage (or the last iterate
+     * if a stage failed). @p ghosted is a ghosted work vector.
      */
     template <int dim>
     ContinuationResult
     penalty_continuation(const ContinuationParameters    &parameters,
-                         NewtonMinimizer                 &newton,
+                         const StageSolver               &solve_stage,
                          const EnergyFunctional<dim>     &energy,
                          PenaltyTerm<dim>                &contact,
                          const double                     time,
@@ -212,10 +222,6 @@ namespace Signorini
                          const AffineConstraints<double> &constraints,
                          VectorType                      &u,
                          VectorType                      &ghosted,
-                         MatrixType                      &hessian,
-                         VectorType                      &rhs,
-                         ConditionalOStream              &progress,
-                         const typename PenaltyObjective<dim>::PatternBuilder
-                           &rebuild_pattern = {});
+                         ConditionalOStream              &progress);
   } // namespace Contact
 } // namespace Signorini

@@ -24,7 +24,6 @@ namespace Signorini
 {
   namespace Contact
   {
-    /// The "Contact > Two bodies" subsection.
     /**
      * Replace the symmetric matrix @p H by its positive semidefinite part
      * sum_{lambda_k > 0} lambda_k v_k v_k^T (negative eigenvalues set to
@@ -33,6 +32,7 @@ namespace Signorini
     void
     project_to_positive_semidefinite(FullMatrix<double> &H);
 
+    /// The "Contact > Two bodies" subsection.
     struct TwoBodyParameters
     {
       types::boundary_id target_boundary = 0;
@@ -195,10 +195,12 @@ namespace Signorini
 
       /**
        * False if a point of Gamma_C lies inside one of body 2's contact
-       * cells where Phi = 0: it has passed through the layer where the
-       * penalty acts (under a vertex the layer is only about
-       * s/(s + 1/2) of the cell deep), and the penalty would let it go.
-       * The line search then backtracks.
+       * cells where Phi = 0 (it has passed through the layer where the
+       * penalty acts: under a vertex the layer is only about s/(s + 1/2)
+       * of the cell deep, and the penalty would let it go), or where it is
+       * past the crest of Phi (grad Phi . m < 0, m pointing from the face
+       * into its cell: the penalty force pushes it deeper, and a larger mu
+       * would pull it through). The line search then backtracks.
        */
       bool
       admissible(const VectorType &u) const override;

@@ -1,0 +1,66 @@
+// Reading what a run of the signorini executable wrote, for tests that run
+// whole scenes and check numbers computed from the output files.
+#pragma once
+
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace RunOutput
+{
+  /// The rows of a CSV file with a header line, as name -> value maps.
+  inline std::vector<std::map<std::string, double>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream                              in(file);
+    std::string                                line;
+    std::vector<std::string>                   names;
+    std::vector<std::map<std::string, double>> rows;
+    if (!std::getline(in, line))
+      return rows;
+    std::stringstream header(line);
+    for (std::string name; std::getline(header, name, ',');)
+      names.push_back(name);
+    while (std::getline(in, line))
+      {
+        std::stringstream             row(line);
+        std::map<std::string, double> values;
+        std::string                   cell;
+        for (unsigned int i = 0; i < names.size() && std::getline(row, cell, ','); ++i)
+          values[names[i]] = std::atof(cell.c_str());
+        rows.push_back(values);
+      }
+    return rows;
+  }
+
+  /**
+   * The "value" of quantity @p name in the "quantities" block of a
+   * summary.json (NaN if the file or the quantity is missing).
+   */
+  inline double
+  summary_quantity(const std::string &summary_file, const std::string &name)
+  {
+    std::ifstream     in(summary_file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text  = buffer.str();
+    const auto        block = text.find("\"quantities\"");
+    const auto        key   = text.find("\"" + name + "\"", block);
+    if (block == std::string::npos || key == std::string::npos)
+      return std::numeric_limits<double>::quiet_NaN();
+    const auto value = text.find("\"value\":", key);
+    if (value == std::string::npos)
+      return std::numeric_limits<double>::quiet_NaN();
+    return std::strtod(text.c_str() + value + 8, nullptr);
+  }
+
+  inline const char *
+  verdict(const bool ok)
+  {
+    return ok ? "yes" : "NO";
+  }
+} // namespace RunOutput
