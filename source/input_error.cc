@@ -1,6 +1,7 @@
 #include <signorini/input_error.h>
 
 #include <regex>
+#include <sstream>
 
 namespace Signorini
 {
@@ -14,9 +15,15 @@ namespace Signorini
     const auto stack = msg.find("Stacktrace:");
     if (stack != std::string::npos)
       msg = msg.substr(0, stack);
-    msg = std::regex_replace(msg, std::regex("[\\s-]*\\n[\\s-]*"), " ");
-    msg = std::regex_replace(msg, std::regex("\\s+"), " ");
-    while (!msg.empty() && (msg.back() == ' ' || msg.back() == '-'))
+    // Drop deal.II's separator lines (dashes only), join the rest: a dash
+    // inside the text (a minus sign) stays.
+    std::istringstream lines(msg);
+    std::string        joined;
+    for (std::string line; std::getline(lines, line);)
+      if (!std::regex_match(line, std::regex("\\s*-*\\s*")))
+        joined += line + " ";
+    msg = std::regex_replace(joined, std::regex("\\s+"), " ");
+    while (!msg.empty() && msg.back() == ' ')
       msg.pop_back();
     while (!msg.empty() && msg.front() == ' ')
       msg.erase(msg.begin());

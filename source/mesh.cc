@@ -9,11 +9,91 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
+#include <vector>
 
 namespace Signorini
 {
+
+  namespace
+  {
+    /**
+     * The parts of an ASCII Gmsh file that GridIn::read_msh trusts without
+     * checking: the $MeshFormat line, and the count lines after $Nodes and
+     * $Elements, whose layout depends on the format version (4.x: four
+     * numbers; 2.x: one). A 4.1 header over a 2.2 body makes read_msh
+     * write out of bounds.
+     */
+    void
+    check_gmsh_layout(std::istream &in, const std::string &file)
+    {
+      std::string  line;
+      unsigned int number  = 0;
+      double       version = -1.;
+      auto         next    = [&]() {
+        ++number;
+        return static_cast<bool>(std::getline(in, line));
+      };
+      auto where = [&]() { return file + ":" + std::to_string(number); };
+      auto words = [](const std::string &text) {
+        std::istringstream  stream(text);
+        std::vector<double> values;
+        for (std::string w; stream >> w;)
+          {
+            char        *end   = nullptr;
+            const double value = std::strtod(w.c_str(), &end);
+            if (end == w.c_str() || *end != '\0')
+              return std::vector<double>(); // not all numbers
+            values.push_back(value);
+          }
+        return values;
+      };
+      if (!next())
+        throw InputError(where(), "the mesh file is empty");
+      if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+      if (line != "$MeshFormat")
+        throw InputError(where(), "not an ASCII Gmsh file: it must start with "
+                                  "$MeshFormat");
+      if (!next())
+        throw InputError(where(), "the file ends inside $MeshFormat");
+      const auto format = words(line);
+      if (format.size() != 3)
+        throw InputError(where(), "expected 'version file-type data-size' "
+                                  "after $MeshFormat");
+      version = format[0];
+      if (format[1] != 0.)
+        throw InputError(where(), "binary Gmsh files are not supported: "
+                                  "save the mesh in ASCII format");
+      if (!(version >= 2. && version < 5.))
+        throw InputError(where(), "Gmsh format version " +
+                                    std::to_string(version) +
+                                    " is not supported (2.x or 4.x)");
+      const std::size_t expected = (version >= 4. ? 4 : 1);
+      while (next())
+        {
+          if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+          if (line != "$Nodes" && line != "$Elements")
+            continue;
+          const std::string section = line;
+          if (!next())
+            throw InputError(where(), "the file ends after " + section);
+          if (words(line).size() != expected)
+            throw InputError(where(),
+                             "after " + section + " a format " +
+                               (expected == 4 ? std::string("4.x") :
+                                                std::string("2.x")) +
+                               " file has a line of " + std::to_string(expected) +
+                               " number(s); does the body match the "
+                               "$MeshFormat version?");
+        }
+    }
+  } // namespace
   void
   BodyGeometry::declare_parameters(ParameterHandler &prm)
   {
@@ -392,12 +472,18 @@ namespace Signorini
     std::vector<ManifoldSpec<dim>> manifolds;
     if (mesh.source == MeshParameters::Source::gmsh)
       {
+        if (std::filesystem::is_directory(mesh.gmsh_file))
+          throw InputError("Mesh > Gmsh file",
+                           "'" + mesh.gmsh_file + "' is a directory, not a mesh file");
         std::ifstream in(mesh.gmsh_file);
         if (!in)
           throw InputError("Mesh > Gmsh file",
                            "cannot open '" + mesh.gmsh_file + "'");
         if (in.peek() == std::ifstream::traits_type::eof())
           throw InputError(mesh.gmsh_file, "the mesh file is empty");
+        check_gmsh_layout(in, mesh.gmsh_file);
+        in.clear();
+        in.seekg(0);
         Triangulation<dim> serial;
         GridIn<dim>        grid_in(serial);
         try

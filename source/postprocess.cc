@@ -395,18 +395,18 @@ namespace Signorini
   }
 
   template <int dim>
-  void
+  std::string
   Postprocessor<dim>::write_snapshot(const VectorType &u, const std::string &name)
   {
     if (format == "none")
-      return;
+      return "";
     const StressOutput<dim> stress(materials);
     DataOut<dim>            data_out;
     add_displacement_fields(u, stress, data_out);
     data_out.build_patches(mapping, dof_handler.get_fe().degree,
                            DataOut<dim>::curved_inner_cells);
-    data_out.write_vtu_with_pvtu_record(output_directory + "/", name, 0,
-                                        dof_handler.get_communicator(), 4);
+    return data_out.write_vtu_with_pvtu_record(output_directory + "/", name, 0,
+                                               dof_handler.get_communicator(), 4);
   }
 
   template class Postprocessor<2>;

@@ -4,14 +4,60 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <regex>
+#include <vector>
 
 namespace Signorini
 {
   namespace
   {
+    /**
+     * Check that @p file can be read and follow its 'include' lines (paths
+     * relative to the working directory, as ParameterHandler opens them):
+     * a file that includes itself, directly or through others, would make
+     * ParameterHandler recurse until the stack overflows.
+     */
+    void
+    check_parameter_file(const std::string        &file,
+                         std::vector<std::string> &where_chain,
+                         std::vector<std::string> &open_files)
+    {
+      const std::string where = where_chain.empty() ? file : where_chain.back();
+      if (std::filesystem::is_directory(file))
+        throw InputError(where, "'" + file + "' is a directory, not a parameter file");
+      std::ifstream in(file);
+      if (!in)
+        throw InputError(where, where_chain.empty() ?
+                                  "cannot open the parameter file" :
+                                  "cannot open the included file '" + file + "'");
+      std::error_code   ec;
+      const std::string canonical =
+        std::filesystem::weakly_canonical(file, ec).string();
+      for (const auto &f : open_files)
+        if (f == canonical)
+          throw InputError(where, "'" + file + "' includes itself (through " +
+                                    std::to_string(open_files.size()) +
+                                    " file(s))");
+      if (open_files.size() >= 32)
+        throw InputError(where, "include files nested more than 32 deep");
+      open_files.push_back(canonical);
+      const std::regex include("\\s*(include|INCLUDE)\\s+([^#]*?)\\s*(#.*)?");
+      std::smatch      match;
+      std::string      line;
+      for (unsigned int number = 1; std::getline(in, line); ++number)
+        if (std::regex_match(line, match, include) && match[2].length() > 0)
+          {
+            where_chain.push_back(file + ":" + std::to_string(number));
+            check_parameter_file(match[2].str(), where_chain, open_files);
+            where_chain.pop_back();
+          }
+      open_files.pop_back();
+    }
+
     void
     print_usage(std::ostream &out)
     {
@@ -79,9 +125,8 @@ namespace Signorini
     try
       {
         {
-          std::ifstream in(file);
-          if (!in)
-            throw InputError(file, "cannot open the parameter file");
+          std::vector<std::string> where_chain, open_files;
+          check_parameter_file(file, where_chain, open_files);
         }
         try
           {
@@ -143,9 +188,20 @@ namespace Signorini
       }
     catch (const std::exception &e)
       {
+        const std::string message = essential_message(e.what());
+        // A number the pattern accepts but std::stod cannot hold (e.g. a
+        // subnormal 1e-320, or beyond 1.8e308) is bad input, not a bug.
+        if (message.find("Can't convert the parameter value") != std::string::npos)
+          {
+            if (root)
+              std::cerr << "signorini: error: " << file << ": " << message
+                        << " (out of the range of a double: |x| must lie "
+                           "between 2.2e-308 and 1.8e308, or be 0)"
+                        << std::endl;
+            return input_error;
+          }
         if (root)
-          std::cerr << "signorini: internal error: "
-                    << essential_message(e.what()) << std::endl;
+          std::cerr << "signorini: internal error: " << message << std::endl;
         return internal_error;
       }
   }

@@ -465,6 +465,17 @@ namespace Signorini
       }
     if (two_body)
       {
+        // The start state (u = 0) must be one the penalty can act on: a
+        // point of Gamma_C inside body 2 below the indicator layer would be
+        // pulled through, not pushed out (collective).
+        if (!two_body->admissible(solution_ghosted))
+          throw InputError("Body 2 > Geometry",
+                           "at the start, a point of body 1's contact boundary "
+                           "(Contact > Contact boundary id) lies inside body 2 "
+                           "deeper than the layer in which the indicator "
+                           "function of its surface acts: move the bodies "
+                           "apart (a penetration within that layer is "
+                           "allowed)");
         report.contact_nodes = two_body->n_global_nodes();
         // mu P has the units of energy per length^(dim-1) times Phi (<= 1
         // inside a simplex): mu_0 = c_0 E h.
@@ -946,18 +957,20 @@ namespace Signorini
         report.reason = e.what();
         // The solver's last iterate of the failed step, for diagnosis (not
         // part of the solution series).
+        std::string snapshot;
         if (failed_iterate.size() > 0)
           {
             solution_ghosted = failed_iterate;
-            postprocessor->write_snapshot(solution_ghosted, "failed_iterate");
+            snapshot = postprocessor->write_snapshot(solution_ghosted, "failed_iterate");
             solution_ghosted = solution;
           }
         pcout << "Run failed: " << report.reason << std::endl
               << "The output of the last converged step (t = "
-              << report.final_time << ") is in " << output_directory
-              << "; the solver's last iterate of the failed step is in "
-                 "failed_iterate_0000.pvtu there"
-              << std::endl;
+              << report.final_time << ") is in " << output_directory;
+        if (!snapshot.empty())
+          pcout << "; the solver's last iterate of the failed step is in "
+                << snapshot << " there";
+        pcout << std::endl;
       }
 
     report.timing["setup"] = setup_seconds;

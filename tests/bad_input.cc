@@ -1,7 +1,13 @@
 // Bad input must stop the program with a message that names the file, line
 // or entry and says what is wrong, a non-zero exit status, and no output
 // folder. Each case edits a valid base scene (which itself must run: the
-// first case) and runs the real executable on it.
+// first case) and runs the real executable on it. The cases cover the
+// issue's list (E <= 0, nu >= 0.5 with a compressible law, C10 + C01 <= 0,
+// zero or negative load steps, a missing/empty/corrupt Gmsh file, a contact
+// boundary id absent from the mesh, two bodies overlapping at the start, an
+// unknown Ipopt option) and benchmarks.md 5 (missing or unreadable files,
+// unknown keys, values out of range, a mesh file with no contact boundary,
+// contradictory boundary conditions).
 
 #include <cstdio>
 #include <filesystem>
@@ -107,16 +113,37 @@ main()
   run_case("valid_base", scene({}), out);
 
   run_case("unknown_key", scene({{"@EXTRA@", "subsection Body 1\n  set Foo = 3\nend"}}), out);
+  run_case("unknown_subsection",
+           scene({{"@EXTRA@", "subsection Bodies\n  set Active = true\nend"}}), out);
+  run_case("include_missing_file",
+           scene({{"@EXTRA@", "include does_not_exist.prm"}}), out);
+  // A file that includes itself made ParameterHandler recurse until the
+  // stack overflowed (SIGSEGV).
+  run_case("self_include", scene({{"@EXTRA@", "include self_include.prm"}}), out);
+  // The message must quote the value as written (the minus sign was lost).
+  run_case("negative_dimension",
+           replace(scene({}), "set Dimension = 2", "set Dimension = -2"), out);
+  // Patterns::Double accepts a subnormal number that std::stod rejects.
+  run_case("subnormal_value",
+           scene({{"@MATERIAL@", "set Poisson's ratio = 1e-320"}}), out);
   run_case("malformed_value",
            scene({{"@MATERIAL@", "set Young's modulus = abc"}}), out);
   run_case("negative_modulus",
            scene({{"@MATERIAL@", "set Young's modulus = -3"}}), out);
+  run_case("zero_modulus", scene({{"@MATERIAL@", "set Young's modulus = 0"}}), out);
   run_case("incompressible_nu",
            scene({{"@MATERIAL@", "set Poisson's ratio = 0.5"}}), out);
+  run_case("compressible_nu_above_half",
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Poisson's ratio = 0.6"}}),
+           out);
   run_case("nonpositive_shear",
            scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set C10 = 0\n    set C01 = 0"}}),
            out);
+  run_case("negative_shear_sum",
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set C10 = 1\n    set C01 = -2"}}),
+           out);
   run_case("zero_steps", scene({{"@STEPS@", "set Number of steps = 0"}}), out);
+  run_case("negative_steps", scene({{"@STEPS@", "set Number of steps = -2"}}), out);
   run_case("negative_end_time", scene({{"@STEPS@", "set End time = -1"}}), out);
   run_case("bad_dimension", replace(scene({}), "set Dimension = 2", "set Dimension = 4"), out);
   run_case("missing_boundary_id",
@@ -141,9 +168,23 @@ main()
   std::ofstream("corrupt.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0\n";
   run_case("corrupt_gmsh_file",
            scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = corrupt.msh"}}), out);
+  // A 4.1 header over a 2.2 body made deal.II's reader write out of bounds.
+  std::ofstream("version_mismatch.msh")
+    << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+       "3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n1\n1 3 2 0 1 1 2 3 4\n$EndElements\n";
+  run_case("gmsh_version_mismatch",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = version_mismatch.msh"}}), out);
+  std::ofstream("binary.msh") << "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n";
+  run_case("gmsh_binary",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = binary.msh"}}), out);
+  std::filesystem::create_directories("folder.msh");
+  run_case("gmsh_file_is_directory",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = folder.msh"}}), out);
   run_case("duplicate_material_id",
            scene({{"@EXTRA@", "subsection Body 2\n  set Active = true\n  set Material id = 0\nend"}}), out);
   run_case("missing_parameter_file", "", out, false);
+  std::filesystem::create_directories("parameter_file_is_directory.prm");
+  run_case("parameter_file_is_directory", "", out, false);
 
   // Contact and solver input.
   const std::string contact = "subsection Contact\n  set Type = rigid foundation\n"
@@ -158,6 +199,18 @@ main()
   };
   run_case("contact_boundary_not_in_mesh",
            with_contact("7", "set Shape = plane", "newton-penalty"), out);
+  // A Gmsh mesh of the unit square whose only tagged boundary is the
+  // clamped bottom (id 2): the contact boundary (id 3) is not in it.
+  std::ofstream("no_contact.msh")
+    << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+       "3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n2\n1 1 2 2 1 1 2\n"
+       "2 3 2 0 1 1 2 3 4\n$EndElements\n";
+  run_case("gmsh_without_contact_boundary",
+           scene({{"@MESH@", "set Source = gmsh\n  set Gmsh file = no_contact.msh"},
+                  {"@EXTRA@", replace(replace(replace(contact, "@ID@", "3"), "@PSI@",
+                                              "set Shape = plane"),
+                                      "@METHOD@", "newton-penalty")}}),
+           out);
   run_case("contact_psi_does_not_parse",
            with_contact("3", "set Shape = expression\n    set Function = 0.1*x^^2",
                         "newton-penalty"),
@@ -208,14 +261,29 @@ main()
                             "    set Stretch = 0\n  end\n",
                       "newton-penalty"),
            out);
-  run_case("two_bodies_with_ipopt",
-           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n  end\n",
-                      "ipopt"),
+  // Body 2, a unit square moved down by 0.25 and clamped at its bottom,
+  // overlaps body 1 by 0.75 at the start, far deeper than the layer in
+  // which the indicator function of its top is positive.
+  run_case("two_bodies_initial_overlap",
+           scene({{"@BC@", "set Fixed boundaries = 2: xy, 12: xy"},
+                  {"@EXTRA@", "subsection Body 2\n  set Active = true\n"
+                              "  subsection Geometry\n    set Lower corner = 0, -0.25\n"
+                              "    set Upper corner = 1, 0.75\n"
+                              "    set Boundary id offset = 10\n  end\nend\n"
+                              "subsection Contact\n  set Type = two bodies\n"
+                              "  set Contact boundary id = 2\n"
+                              "  subsection Two bodies\n    set Target boundary id = 13\n  end\n"
+                              "end\nsubsection Solver\n  set Method = newton-penalty\nend"}}),
            out);
   std::ofstream("bad.opt") << "not_an_ipopt_option 3\n";
   run_case("unknown_ipopt_option",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\n"
                               "  subsection Ipopt\n    set Options file = bad.opt\n"
+                              "  end\nend"}}),
+           out);
+  run_case("missing_ipopt_options_file",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\n"
+                              "  subsection Ipopt\n    set Options file = does_not_exist.opt\n"
                               "  end\nend"}}),
            out);
   run_case("ipopt_on_two_ranks",

@@ -85,9 +85,10 @@ namespace Signorini
     /**
      * Write the state @p u outside the solution series, as
      * NAME_0000.pvtu (+ .vtu): used for the last iterate of a failed
-     * solve, which must not be presented as a result.
+     * solve, which must not be presented as a result. Returns the name of
+     * the record written, or "" (Format = none).
      */
-    void
+    std::string
     write_snapshot(const VectorType &u, const std::string &name);
 
     /// Called before the patches are built, to add further fields.
