@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace RunOutput
@@ -56,6 +57,40 @@ namespace RunOutput
     if (value == std::string::npos)
       return std::numeric_limits<double>::quiet_NaN();
     return std::strtod(text.c_str() + value + 8, nullptr);
+  }
+
+  /**
+   * Every number of a summary.json with the key it stands under, in file
+   * order, except the wall times (the "wall time [s]" object), which
+   * differ from run to run by nature.
+   */
+  inline std::vector<std::pair<std::string, double>>
+  summary_numbers(const std::string &summary_file)
+  {
+    std::ifstream     in(summary_file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    std::string text = buffer.str();
+    const auto  wall = text.find("\"wall time [s]\"");
+    if (wall != std::string::npos)
+      text.erase(wall, text.find('}', wall) - wall);
+    std::vector<std::pair<std::string, double>> numbers;
+    std::string                                 key;
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '"')
+        {
+          const auto end = text.find('"', i + 1);
+          key            = text.substr(i + 1, end - i - 1);
+          i              = end;
+        }
+      else if (text[i] == '-' || (text[i] >= '0' && text[i] <= '9'))
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(text.c_str() + i, &end);
+          numbers.emplace_back(key, value);
+          i = end - text.c_str() - 1;
+        }
+    return numbers;
   }
 
   inline const char *
