@@ -235,7 +235,7 @@ namespace Signorini
       update(x, new_x);
       const Evaluation e = evaluate(nullptr);
       obj_value          = e.value;
-      return e.admissible;
+      return e.admissible && std::isfinite(e.value);
     }
 
     bool
@@ -246,9 +246,13 @@ namespace Signorini
       // points of its line search get eval_f): the origin of step limits.
       accepted           = u;
       const Evaluation e = evaluate(&rhs);
+      bool finite = true;
       for (Index i = 0; i < n; ++i)
-        grad_f[i] = -rhs[s.free_dofs[i]];
-      return e.admissible;
+        {
+          grad_f[i] = -rhs[s.free_dofs[i]];
+          finite    = finite && std::isfinite(grad_f[i]);
+        }
+      return e.admissible && finite;
     }
 
     bool
@@ -262,7 +266,7 @@ namespace Signorini
       if (s.incompressibility)
         for (const auto &cell : s.incompressibility->cells())
           g[r++] = s.incompressibility->evaluate(cell, u, nullptr, nullptr);
-      return true;
+      return std::all_of(g, g + r, [](const Number v) { return std::isfinite(v); });
     }
 
     bool
@@ -385,7 +389,8 @@ namespace Signorini
         }
       H.compress(VectorOperation::add);
       s.read_hessian(values);
-      return true;
+      return std::all_of(values, values + s.hessian_rows.size(),
+                         [](const Number v) { return std::isfinite(v); });
     }
 
     void
@@ -419,6 +424,15 @@ namespace Signorini
       // A rebuilt sparsity pattern: stop here, solve() restarts Ipopt.
       if (s.pattern_stale)
         return false;
+      // Ipopt's own state gone non-finite (e.g. with constraint values of
+      // 1e300 its barrier parameter became NaN, and the next
+      // factorisation never returned): stop with a reason.
+      if (!std::isfinite(obj_value) || !std::isfinite(inf_pr) ||
+          !std::isfinite(inf_du) || !std::isfinite(mu))
+        {
+          s.non_finite_stop = true;
+          return false;
+        }
       std::ostringstream line;
       line << "    ipopt it " << std::setw(3) << iter << "  E "
            << std::scientific << std::setprecision(10) << obj_value
@@ -786,6 +800,7 @@ namespace Signorini
                  0;
 
     Ipopt::ApplicationReturnStatus status;
+    non_finite_stop = false;
     for (unsigned int attempt = 0;; ++attempt)
       {
         if (penalty && !pattern_stale && penalty->needs_new_pattern(u))
@@ -812,7 +827,10 @@ namespace Signorini
                     "new sparsity pattern"
                  << std::endl;
       }
-    result.status  = status_name(status);
+    result.status = non_finite_stop ?
+                      "Invalid_Number_Detected (non-finite objective, "
+                      "residual or barrier parameter in Ipopt's iteration)" :
+                      status_name(status);
     result.success = (status == Ipopt::Solve_Succeeded ||
                       status == Ipopt::Solved_To_Acceptable_Level);
     if (result.success)

@@ -171,6 +171,7 @@ namespace Signorini
     Contact::PenaltyTerm<dim>           *penalty = nullptr;
     PatternBuilder                       rebuild_pattern;
     bool                                 pattern_stale = false;
+    bool                                 non_finite_stop = false;
     double                               max_increment = 0.;
     std::string                          output_directory;
     ConditionalOStream                  &progress;
