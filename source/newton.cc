@@ -126,6 +126,13 @@ namespace Signorini
       if (!ok)
         return false;
       constraints.distribute(d);
+      // A direction that moves a DoF by more than 1000 scene sizes comes
+      // from a (nearly) singular Hessian, e.g. a body held only by contact
+      // before it touches; whether such a solve also passes the slope test
+      // is chance (it depended on the units of the scene), so it is
+      // treated like one that fails it: the Hessian gets shifted.
+      if (length_scale > 0. && d.linfty_norm() > 1e3 * length_scale)
+        return false;
       return is_descent(d);
     };
     if (solve_for_descent())
