@@ -28,13 +28,9 @@ int
 main()
 {
   std::ofstream out("output");
-  std::ofstream("ironing_slide.prm")
-    << "include " << SIGNORINI_SOURCE_DIR << "/prm/ironing.prm\n"
-    << "set Output directory = run\n"
-    << "subsection Load stepping\n  set End time = 1.2\n  set Number of steps = 48\nend\n"
-    << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
-  const int status =
-    std::system((std::string(SIGNORINI_EXECUTABLE) + " ironing_slide.prm").c_str());
+  const int status = RunOutput::run_scene(
+    "run", "ironing.prm",
+    "subsection Load stepping\n  set End time = 1.2\n  set Number of steps = 48\nend\n");
   out << "exit code 0: " << verdict(status == 0) << "\n";
 
   const auto reactions = read_csv("run/reactions.csv");

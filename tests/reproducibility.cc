@@ -28,12 +28,7 @@ namespace
   int
   run(const std::string &name, const std::string &launcher)
   {
-    std::ofstream(name + ".prm")
-      << "include " << SIGNORINI_SOURCE_DIR << "/prm/hertz_block.prm\n"
-      << "set Output directory = " << name << "\n"
-      << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
-    return std::system(
-      (launcher + SIGNORINI_EXECUTABLE + " " + name + ".prm").c_str());
+    return RunOutput::run_scene(name, "hertz_block.prm", "", launcher);
   }
 } // namespace
 

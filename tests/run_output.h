@@ -93,6 +93,29 @@ namespace RunOutput
     return numbers;
   }
 
+#if defined(SIGNORINI_EXECUTABLE) && defined(SIGNORINI_SOURCE_DIR)
+  /**
+   * Run the committed scene prm/@p scene with @p edits appended (entries
+   * that override the scene's), writing to the folder @p name, without
+   * fields and quietly; @p launcher (e.g. "mpirun -np 2 ") goes before the
+   * executable. Returns std::system's status (0: exit code 0).
+   */
+  inline int
+  run_scene(const std::string &name,
+            const std::string &scene,
+            const std::string &edits,
+            const std::string &launcher = "")
+  {
+    std::ofstream(name + ".prm")
+      << "include " << SIGNORINI_SOURCE_DIR << "/prm/" << scene << "\n"
+      << "set Output directory = " << name << "\n"
+      << edits
+      << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
+    return std::system(
+      (launcher + SIGNORINI_EXECUTABLE + " " + name + ".prm").c_str());
+  }
+#endif
+
   inline const char *
   verdict(const bool ok)
   {

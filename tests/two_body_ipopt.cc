@@ -23,15 +23,12 @@ namespace
   int
   run(const std::string &name, const std::string &method, const std::string &form)
   {
-    std::ofstream(name + ".prm")
-      << "include " << SIGNORINI_SOURCE_DIR << "/prm/hertz_block.prm\n"
-      << "set Output directory = " << name << "\n"
-      << "subsection Mesh\n  set Local refinements = 4\nend\n"
-      << "subsection Contact\n  subsection Two bodies\n    set Contact form = "
-      << form << "\n  end\nend\n"
-      << "subsection Solver\n  set Method = " << method << "\nend\n"
-      << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
-    return std::system((std::string(SIGNORINI_EXECUTABLE) + " " + name + ".prm").c_str());
+    return RunOutput::run_scene(
+      name, "hertz_block.prm",
+      "subsection Mesh\n  set Local refinements = 4\nend\n"
+      "subsection Contact\n  subsection Two bodies\n    set Contact form = " +
+        form + "\n  end\nend\nsubsection Solver\n  set Method = " + method +
+        "\nend\n");
   }
 } // namespace
 

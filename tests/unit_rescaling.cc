@@ -29,17 +29,6 @@ using RunOutput::verdict;
 
 namespace
 {
-  int
-  run(const std::string &name, const std::string &scene, const std::string &edits)
-  {
-    std::ofstream(name + ".prm")
-      << "include " << SIGNORINI_SOURCE_DIR << "/prm/" << scene << "\n"
-      << "set Output directory = " << name << "\n"
-      << edits
-      << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
-    return std::system((std::string(SIGNORINI_EXECUTABLE) + " " + name + ".prm").c_str());
-  }
-
   double
   number(const std::string &summary, const std::string &key)
   {
@@ -55,7 +44,8 @@ namespace
           const double iteration_tolerance, std::ostream &out)
   {
     const std::string base = label + "_base", scaled = label + "_scaled";
-    const bool ok = run(base, scene, common) == 0 && run(scaled, scene, common + scaled_edits) == 0;
+    const bool ok = RunOutput::run_scene(base, scene, common) == 0 &&
+                     RunOutput::run_scene(scaled, scene, common + scaled_edits) == 0;
     out << label << ": both runs exit 0: " << verdict(ok) << "\n";
     const std::string a = base + "/summary.json", b = scaled + "/summary.json";
     out << label << ": same load steps: "
