@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""Hard cases (benchmarks.md section 5, issue "Hard cases stay numerically
+stable"): run every scene of prm/hard/ with each solver that applies, at
+full size, and report for each run whether it converged, its load steps and
+step cuts, Newton or Ipopt iterations, the largest penalty factor, the
+smallest J, the largest penetration over the element size and the wall
+time. Writes the table to doc/robustness.md (between its TABLE markers) and
+prints it.
+
+    python3 benchmarks/hard_cases.py [--build build] [--only NAME ...]
+                                     [--timeout SECONDS] [--no-doc]
+
+The scenes include committed scenes by a path relative to prm/hard/ (deal.II
+resolves 'include' against the working directory), so each run starts
+there; its output goes to build/output/hard/CASE_METHOD/.
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+HARD = os.path.join(ROOT, "prm", "hard")
+
+# Scene -> the solvers that apply to it (Method entries).
+CASES = [
+    ("ssnv187_nu4999", ["newton"]),
+    ("ssnv187_20x_load", ["newton"]),
+    ("hertz_nu4999", ["newton-penalty", "ipopt"]),
+    ("hertz_tight_penetration", ["newton-penalty", "ipopt"]),
+    ("hertz_initial_gap", ["newton-penalty", "ipopt"]),
+    ("hertz_initial_penetration", ["newton-penalty", "ipopt"]),
+    ("stiff_on_soft_block", ["newton-penalty", "ipopt"]),
+    ("ironing_full", ["newton-penalty"]),
+]
+
+
+def run_case(executable, name, method, out_root, timeout):
+    folder = os.path.join(out_root, f"{name}_{method}")
+    os.makedirs(out_root, exist_ok=True)
+    wrapper = os.path.join(out_root, f"{name}_{method}.prm")
+    with open(wrapper, "w") as f:
+        f.write(f"include {os.path.join(HARD, name + '.prm')}\n"
+                f"set Output directory = {folder}\n"
+                f"subsection Solver\n  set Method = {method}\nend\n"
+                "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n")
+    start = time.time()
+    try:
+        proc = subprocess.run([executable, wrapper], cwd=HARD, timeout=timeout,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                              text=True)
+        code, message = proc.returncode, proc.stderr.strip().splitlines()
+    except subprocess.TimeoutExpired:
+        code, message = None, [f"killed after {timeout} s"]
+    wall = time.time() - start
+    row = {"case": name, "solver": method, "exit": code, "wall": wall,
+           "message": message[-1] if message else ""}
+    summary = os.path.join(folder, "summary.json")
+    if code is not None and os.path.exists(summary):
+        with open(summary) as f:
+            s = json.load(f)
+        steps = s.get("steps", [])
+        mus = [st["mu"] for step in steps for st in step.get("penalty stages", [])]
+        row.update({
+            "status": s["status"],
+            "steps": s["load steps"],
+            "cuts": s["step cuts"],
+            "iterations": s.get("ipopt iterations", s.get("newton iterations")),
+            "mu": max(mus) if mus else None,
+            "min_J": min((step["min J"] for step in steps), default=None),
+            "penetration": max((step.get("max penetration over h", 0.)
+                                for step in steps), default=None),
+            "dofs": s["mesh"]["dofs"],
+        })
+        if s["status"] != "converged":
+            row["message"] = s.get("reason", row["message"])
+    else:
+        row["status"] = "no result"
+    return row
+
+
+def fmt(value, spec):
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "–"
+    return format(value, spec)
+
+
+def table(rows):
+    lines = ["| case | solver | DoFs | converged | load steps (cuts) | iterations "
+             "| largest μ | min J | max penetration / h | wall time [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        converged = "yes" if r.get("status") == "converged" else \
+            f"**no**: {r.get('message', '')[:160]}"
+        lines.append(
+            f"| {r['case']} | {r['solver']} | {fmt(r.get('dofs'), 'd')} | {converged} "
+            f"| {fmt(r.get('steps'), 'd')} ({fmt(r.get('cuts'), 'd')}) "
+            f"| {fmt(r.get('iterations'), 'd')} | {fmt(r.get('mu'), '.2e')} "
+            f"| {fmt(r.get('min_J'), '.3f')} | {fmt(r.get('penetration'), '.1e')} "
+            f"| {r['wall']:.1f} |")
+    return "\n".join(lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--only", nargs="*", help="case names to run")
+    parser.add_argument("--timeout", type=float, default=3600.)
+    parser.add_argument("--no-doc", action="store_true",
+                        help="do not rewrite doc/robustness.md")
+    args = parser.parse_args()
+    executable = os.path.join(os.path.abspath(args.build), "signorini")
+    out_root = os.path.join(os.path.abspath(args.build), "output", "hard")
+    if not os.access(executable, os.X_OK):
+        sys.exit(f"hard_cases.py: no executable {executable}: build first "
+                 "(bash scripts/setup.sh)")
+    rows = []
+    for name, methods in CASES:
+        if args.only and name not in args.only:
+            continue
+        for method in methods:
+            row = run_case(executable, name, method, out_root, args.timeout)
+            rows.append(row)
+            print(f"{name:28s} {method:15s} {row.get('status', ''):10s} "
+                  f"{row['wall']:7.1f} s", flush=True)
+    text = table(rows)
+    print(text)
+    n_ok = sum(r.get("status") == "converged" for r in rows)
+    print(f"{n_ok} converged, {len(rows) - n_ok} not converged")
+    if not args.no_doc and not args.only:
+        doc = os.path.join(ROOT, "doc", "robustness.md")
+        with open(doc) as f:
+            content = f.read()
+        begin, end = "<!-- TABLE BEGIN -->", "<!-- TABLE END -->"
+        head, rest = content.split(begin)
+        _, tail = rest.split(end)
+        stamp = (f"Measured {datetime.date.today()} on {platform.machine()}, "
+                 f"{os.cpu_count()} cores, one MPI rank, by "
+                 "`python3 benchmarks/hard_cases.py`.")
+        with open(doc, "w") as f:
+            f.write(f"{head}{begin}\n{stamp}\n\n{text}\n\n{n_ok} of {len(rows)} "
+                    f"runs converged.\n{end}{tail}")
+    return 0 if n_ok == len(rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
