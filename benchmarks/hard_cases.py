@@ -32,6 +32,7 @@ HARD = os.path.join(ROOT, "prm", "hard")
 CASES = [
     ("ssnv187_nu4999", ["newton"]),
     ("ssnv187_20x_load", ["newton"]),
+    ("ssnv187_corner", ["newton-penalty", "ipopt"]),
     ("hertz_nu4999", ["newton-penalty", "ipopt"]),
     ("hertz_tight_penetration", ["newton-penalty", "ipopt"]),
     ("hertz_initial_gap", ["newton-penalty", "ipopt"]),
