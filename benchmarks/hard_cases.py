@@ -38,6 +38,7 @@ CASES = [
     ("hertz_initial_gap", ["newton-penalty", "ipopt"]),
     ("hertz_initial_penetration", ["newton-penalty", "ipopt"]),
     ("stiff_on_soft_block", ["newton-penalty", "ipopt"]),
+    ("mesh_mismatch", ["newton-penalty", "ipopt"]),
     ("ironing_grazing", ["newton-penalty", "ipopt"]),
     ("ironing_full", ["newton-penalty", "ipopt"]),
 ]
