@@ -444,9 +444,10 @@ namespace Signorini
 
   private:
     /**
-     * E (and the penalty term mu P, if any) at the current state; minus
-     * the gradient into @p minus_gradient if given. Not admissible if
-     * either part says so or the value is not finite.
+     * E, or G_mu = E + mu P with a penalty term (PenaltyObjective: the
+     * same admissibility as for Newton), at the current state; minus the
+     * gradient into @p minus_gradient if given. A state beyond the step
+     * limits is not admissible.
      */
     Evaluation
     evaluate(VectorType *minus_gradient)
@@ -458,19 +459,10 @@ namespace Signorini
           return e;
         }
       TimerOutput::Scope scope(s.timer, "assembly");
-      Evaluation         e =
-        s.energy.evaluate(u, time, *s.constraints, minus_gradient, nullptr);
-      if (!e.admissible || !s.penalty)
-        return e;
-      if (!s.penalty->admissible(u))
-        {
-          e.admissible = false;
-          return e;
-        }
-      e.value +=
-        s.penalty->add_penalty(u, mu, *s.constraints, minus_gradient, nullptr);
-      e.admissible = std::isfinite(e.value);
-      return e;
+      if (!s.penalty)
+        return s.energy.evaluate(u, time, *s.constraints, minus_gradient, nullptr);
+      Contact::PenaltyObjective<dim> objective(s.energy, *s.penalty, time, mu);
+      return objective.evaluate(u, *s.constraints, minus_gradient, nullptr);
     }
 
     /// Whether the current state is within the step limits from the last

@@ -560,6 +560,8 @@ namespace Signorini
       scene_size     = box.get_boundary_points().first.distance(
         box.get_boundary_points().second);
     }
+    if (ipopt)
+      ipopt->set_step_limit(newton_parameters.max_increment * scene_size);
     report.h_max = Utilities::MPI::max(h_max, comm);
   }
 
@@ -651,8 +653,7 @@ namespace Signorini
           std::max(report.derivative_test_errors, result.derivative_test_errors);
         if (!result.success)
           {
-            stats.reason = "Ipopt returned " + result.status + " after " +
-                           std::to_string(result.iterations) + " iterations";
+            stats.reason = result.failure();
             return false;
           }
         if (contact)
@@ -718,15 +719,13 @@ namespace Signorini
         const AffineConstraints<double> target = boundary_constraints(time, false);
         solve_stage = [&, target](const double mu, VectorType &u) {
           solution_ghosted = u;
-          ipopt->set_step_limit(newton_parameters.max_increment * scene_size);
           const auto result = ipopt->solve(time, target, solution_ghosted, mu);
           u                 = solution_ghosted;
           NewtonMinimizer::Statistics s;
           s.converged  = result.success;
           s.iterations = result.iterations;
           if (!result.success)
-            s.reason = "Ipopt returned " + result.status + " after " +
-                       std::to_string(result.iterations) + " iterations";
+            s.reason = result.failure();
           else
             s.evaluation = energy->evaluate(solution_ghosted, time,
                                             homogeneous_constraints, nullptr,

@@ -84,6 +84,14 @@ namespace Signorini
       std::vector<double> pressure_multipliers; // per constrained cell
       int                 derivative_test_errors = -1; // -1: not run
       unsigned int        pattern_rebuilds = 0; // restarts for a new pattern
+
+      /// "Ipopt returned STATUS after N iterations", for failure reasons.
+      std::string
+      failure() const
+      {
+        return "Ipopt returned " + status + " after " +
+               std::to_string(iterations) + " iterations";
+      }
     };
 
     using PatternBuilder = std::function<void(const VectorType &)>;
