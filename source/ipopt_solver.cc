@@ -802,10 +802,7 @@ namespace Signorini
             pattern_stale = true;
           }
         if (pattern_stale)
-          {
-            setup_hessian_structure();
-            ++result.pattern_rebuilds;
-          }
+          setup_hessian_structure();
         Ipopt::SmartPtr<Ipopt::TNLP> problem =
           new Problem(*this, time, mu, target, u, result);
         status = app->OptimizeTNLP(problem);

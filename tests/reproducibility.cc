@@ -55,13 +55,7 @@ main()
         break;
       }
 
-  auto number = [](const std::vector<std::pair<std::string, double>> &v,
-                   const std::string                                 &key) {
-    for (const auto &e : v)
-      if (e.first == key)
-        return e.second;
-    return std::nan("");
-  };
+  const auto &number = RunOutput::first_number;
   out << "2 ranks: same load steps and Newton iterations: "
       << verdict(number(first, "load steps") == number(ranks, "load steps") &&
                  number(first, "newton iterations") ==

@@ -93,6 +93,18 @@ namespace RunOutput
     return numbers;
   }
 
+  /// The first number stored under @p key in @p numbers (from
+  /// summary_numbers()), NaN if there is none.
+  inline double
+  first_number(const std::vector<std::pair<std::string, double>> &numbers,
+               const std::string                                 &key)
+  {
+    for (const auto &e : numbers)
+      if (e.first == key)
+        return e.second;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+
 #if defined(SIGNORINI_EXECUTABLE) && defined(SIGNORINI_SOURCE_DIR)
   /**
    * Run the committed scene prm/@p scene with @p edits appended (entries

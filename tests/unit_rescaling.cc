@@ -32,10 +32,7 @@ namespace
   double
   number(const std::string &summary, const std::string &key)
   {
-    for (const auto &e : summary_numbers(summary))
-      if (e.first == key)
-        return e.second;
-    return std::nan("");
+    return RunOutput::first_number(summary_numbers(summary), key);
   }
 
   void

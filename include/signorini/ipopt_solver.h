@@ -12,7 +12,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -83,7 +82,6 @@ namespace Signorini
       std::vector<double> contact_forces;      // per contact node (>= 0)
       std::vector<double> pressure_multipliers; // per constrained cell
       int                 derivative_test_errors = -1; // -1: not run
-      unsigned int        pattern_rebuilds = 0; // restarts for a new pattern
 
       /// "Ipopt returned STATUS after N iterations", for failure reasons.
       std::string
@@ -94,7 +92,7 @@ namespace Signorini
       }
     };
 
-    using PatternBuilder = std::function<void(const VectorType &)>;
+    using PatternBuilder = typename Contact::PenaltyObjective<dim>::PatternBuilder;
 
     IpoptSolver(const Parameters                  &parameters,
                 const DoFHandler<dim>             &dof_handler,
