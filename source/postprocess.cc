@@ -344,7 +344,8 @@ namespace Signorini
   Postprocessor<dim>::write_output(const VectorType  &u,
                                    const double       time,
                                    const unsigned int step,
-                                   const bool         last_step)
+                                   const bool         last_step,
+                                   const std::string &series)
   {
     if (format == "none" || (step % interval != 0 && !last_step))
       return;
@@ -371,12 +372,12 @@ namespace Signorini
     if (format == "vtu")
       {
         const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-          output_directory + "/", "solution", step, comm, 4);
-        pvd_records.emplace_back(time, pvtu);
+          output_directory + "/", series, step, comm, 4);
+        pvd_records[series].emplace_back(time, pvtu);
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
-            std::ofstream pvd(output_directory + "/solution.pvd");
-            DataOutBase::write_pvd_record(pvd, pvd_records);
+            std::ofstream pvd(output_directory + "/" + series + ".pvd");
+            DataOutBase::write_pvd_record(pvd, pvd_records[series]);
           }
       }
     else
@@ -385,11 +386,12 @@ namespace Signorini
           DataOutBase::DataOutFilterFlags(false, true));
         data_out.write_filtered_data(filter);
         const std::string h5 =
-          "solution-" + Utilities::int_to_string(step, 4) + ".h5";
+          series + "-" + Utilities::int_to_string(step, 4) + ".h5";
         data_out.write_hdf5_parallel(filter, output_directory + "/" + h5, comm);
-        xdmf_entries.push_back(data_out.create_xdmf_entry(filter, h5, time, comm));
-        data_out.write_xdmf_file(xdmf_entries,
-                                 output_directory + "/solution.xdmf",
+        xdmf_entries[series].push_back(
+          data_out.create_xdmf_entry(filter, h5, time, comm));
+        data_out.write_xdmf_file(xdmf_entries[series],
+                                 output_directory + "/" + series + ".xdmf",
                                  comm);
       }
   }

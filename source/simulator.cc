@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/grid/grid_tools.h>
@@ -59,6 +60,10 @@ namespace Signorini
 
     prm.enter_subsection("Mesh");
     MeshParameters::declare_parameters(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    RefinementParameters::declare_parameters(prm);
     prm.leave_subsection();
 
     for (unsigned int b = 0; b < max_bodies; ++b)
@@ -222,6 +227,9 @@ namespace Signorini
 
     prm.enter_subsection("Mesh");
     mesh_parameters.parse_parameters(prm, file.parent_path().string());
+    prm.leave_subsection();
+    prm.enter_subsection("Mesh refinement");
+    refinement_parameters.parse_parameters(prm);
     prm.leave_subsection();
 
     for (unsigned int b = 0; b < max_bodies; ++b)
@@ -418,6 +426,55 @@ namespace Signorini
     if (two_bodies)
       two_body = std::make_unique<Contact::TwoBodyContact<dim>>(
         two_body_parameters, contact_id, dof_handler, *mapping);
+    if (refinement_parameters.band_refinements > 0)
+      {
+        if (!contact && !two_body)
+          throw InputError("Mesh refinement > Contact band refinements",
+                           "refines near the contact boundary, but the scene "
+                           "declares no contact (Contact > Type)");
+        std::function<double(const Point<dim> &)> gap;
+        if (contact)
+          gap = [this](const Point<dim> &X) {
+            return X[dim - 1] - contact->foundation().evaluate(X).psi;
+          };
+        else
+          {
+            // Distance to the bounding box of body 2's cells.
+            Point<dim> lo, hi;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lo[d] = std::numeric_limits<double>::max();
+                hi[d] = -lo[d];
+              }
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->material_id() == material_ids[1])
+                for (const auto v : cell->vertex_indices())
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      lo[d] = std::min(lo[d], cell->vertex(v)[d]);
+                      hi[d] = std::max(hi[d], cell->vertex(v)[d]);
+                    }
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lo[d] = Utilities::MPI::min(lo[d], comm);
+                hi[d] = Utilities::MPI::max(hi[d], comm);
+              }
+            gap = [lo, hi](const Point<dim> &X) {
+              double d2 = 0.;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double out = std::max({lo[d] - X[d], X[d] - hi[d], 0.});
+                  d2 += out * out;
+                }
+              return std::sqrt(d2);
+            };
+          }
+        Refinement::refine_contact_band(triangulation, contact_id,
+                                        refinement_parameters, gap);
+      }
+    if (refinement_parameters.cycles > 0 && method == "ipopt" && report.n_ranks > 1)
+      throw InputError("Mesh refinement > Number of cycles",
+                       "ipopt runs on one rank");
     postprocessor = std::make_unique<Postprocessor<dim>>(prm,
                                                          dof_handler,
                                                          *mapping,
@@ -443,22 +500,16 @@ namespace Signorini
         timer.reset(); // quietly, while the exception is caught
         throw;
       }
-    // The penalty scale: the largest small-strain Young's modulus.
-    double E_max = 0.;
-    for (const auto &m : material_objects)
-      E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
+    update_penalty_scale();
+    report.initial_penalty = mu0;
+    last_mu                = mu0;
     if (contact)
       {
-        report.contact_nodes = contact->n_global_nodes();
         if (report.contact_nodes == 0)
           throw InputError("Contact > Contact boundary id",
                            "boundary " + std::to_string(contact->boundary_id()) +
                              " has no contact node (every node on it is a "
                              "hanging node)");
-        mu0 = continuation_parameters.initial_factor * E_max /
-              std::pow(contact->min_mesh_size(), 2);
-        report.initial_penalty = mu0;
-        last_mu                = mu0;
         postprocessor->extra_fields = [this](DataOut<dim> &data_out) {
           contact->add_output_fields(data_out, solution_ghosted, contact_forces);
         };
@@ -476,18 +527,35 @@ namespace Signorini
                            "function of its surface acts: move the bodies "
                            "apart (a penetration within that layer is "
                            "allowed)");
-        report.contact_nodes = two_body->n_global_nodes();
-        // mu P has the units of energy per length^(dim-1) times Phi (<= 1
-        // inside a simplex): mu_0 = c_0 E h.
-        mu0 = continuation_parameters.initial_factor * E_max *
-              std::pow(two_body->min_mesh_size(), dim - 1);
-        report.initial_penalty = mu0;
-        last_mu                = mu0;
         postprocessor->extra_fields = [this](DataOut<dim> &data_out) {
           two_body->add_output_fields(data_out, solution_ghosted, contact_forces);
         };
       }
     setup_seconds = Utilities::MPI::max(setup_timer.wall_time(), comm);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::update_penalty_scale()
+  {
+    // The penalty scale: the largest small-strain Young's modulus.
+    double E_max = 0.;
+    for (const auto &m : material_objects)
+      E_max = std::max(E_max, Material::small_strain_young_poisson(*m).first);
+    if (contact)
+      {
+        report.contact_nodes = contact->n_global_nodes();
+        mu0 = continuation_parameters.initial_factor * E_max /
+              std::pow(contact->min_mesh_size(), 2);
+      }
+    if (two_body)
+      {
+        report.contact_nodes = two_body->n_global_nodes();
+        // mu P has the units of energy per length^(dim-1) times Phi (<= 1
+        // inside a simplex): mu_0 = c_0 E h.
+        mu0 = continuation_parameters.initial_factor * E_max *
+              std::pow(two_body->min_mesh_size(), dim - 1);
+      }
   }
 
   template <int dim>
@@ -686,8 +754,12 @@ namespace Signorini
     if (method == "newton")
       objective = std::make_unique<EnergyObjective<dim>>(*energy, time);
     else
-      objective = std::make_unique<Contact::PenaltyObjective<dim>>(
-        *energy, *penalty_term, time, mu_start, rebuild);
+      {
+        auto penalised = std::make_unique<Contact::PenaltyObjective<dim>>(
+          *energy, *penalty_term, time, mu_start, rebuild);
+        penalised->timer = timer.get();
+        objective        = std::move(penalised);
+      }
     if (has_prescribed_motion)
       {
         solution_ghosted = solution;
@@ -711,6 +783,7 @@ namespace Signorini
     // unconstrained minimiser of G_mu (two-body contact, Method = ipopt).
     Contact::StageSolver solve_stage = [&](const double mu, VectorType &u) {
       Contact::PenaltyObjective<dim> stage(*energy, *penalty_term, time, mu, rebuild);
+      stage.timer = timer.get();
       return newton.minimize(stage, homogeneous_constraints, u,
                              solution_ghosted, hessian, rhs);
     };
@@ -826,6 +899,114 @@ namespace Signorini
   }
 
   template <int dim>
+  void
+  Simulator<dim>::complete_step(const double                       t,
+                                const unsigned int                 step,
+                                const NewtonMinimizer::Statistics &stats,
+                                Report::Step                      &record,
+                                const std::string                 &series)
+  {
+    report.newton_iterations += stats.iterations;
+    record.time              = t;
+    record.newton_iterations = stats.iterations;
+    record.backtracks        = stats.backtracks;
+    record.regularized       = stats.regularized_steps;
+    record.linear_iterations = stats.linear_iterations;
+    record.residual          = stats.residual;
+    record.energy            = stats.evaluation.value;
+    record.min_J             = stats.evaluation.min_J;
+    report.final_time        = t;
+
+    solution_ghosted = solution;
+    {
+      TimerOutput::Scope scope(*timer, "postprocessing");
+      report.quantities = postprocessor->compute_quantities(solution_ghosted, t);
+      if (contact || two_body)
+        for (const auto &q : contact_quantities(record))
+          report.quantities.push_back(q);
+      if (report.derivative_test_errors >= 0)
+        {
+          Quantity q;
+          q.name  = "ipopt_derivative_test_errors";
+          q.value = report.derivative_test_errors;
+          report.quantities.push_back(q);
+        }
+    }
+    report.steps.push_back(record);
+    if (!series.empty())
+      {
+        TimerOutput::Scope scope(*timer, "output");
+        postprocessor->write_output(solution_ghosted, t, step, t >= end_time, series);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::refine_mesh()
+  {
+    TimerOutput::Scope scope(*timer, "refinement");
+    using Estimator      = RefinementParameters::Estimator;
+    const auto estimator = refinement_parameters.estimator;
+    solution_ghosted = solution;
+    // The nodal contact pressure behind the contact indicator and zone.
+    const Contact::PenaltyTerm<dim> *term =
+      contact ? static_cast<const Contact::PenaltyTerm<dim> *>(contact.get()) :
+                static_cast<const Contact::PenaltyTerm<dim> *>(two_body.get());
+    std::vector<double> pressures;
+    std::vector<bool>   zone;
+    if (term)
+      {
+        pressures = term->nodal_pressures(solution_ghosted, contact_forces);
+        if (refinement_parameters.uniform_zone)
+          zone = Refinement::contact_zone(dof_handler,
+                                          term->contact_nodes_on_boundary(),
+                                          pressures,
+                                          refinement_parameters.zone_depth);
+      }
+    auto contact_indicator = [&]() {
+      return Refinement::contact(dof_handler,
+                                 term->contact_nodes_on_boundary(),
+                                 term->contact_boundary_id(),
+                                 pressures);
+    };
+    Vector<float> indicators;
+    if (estimator == Estimator::kelly || !(contact || two_body))
+      indicators = Refinement::kelly(*mapping, dof_handler, solution_ghosted);
+    else if (estimator == Estimator::contact)
+      indicators = contact_indicator();
+    else
+      {
+        // Each indicator scaled by its largest value on any rank.
+        indicators = Refinement::kelly(*mapping, dof_handler, solution_ghosted);
+        const Vector<float> pressure = contact_indicator();
+        const double max_k = Utilities::MPI::max(
+          static_cast<double>(indicators.linfty_norm()), comm);
+        const double max_c = Utilities::MPI::max(
+          static_cast<double>(pressure.linfty_norm()), comm);
+        if (max_k > 0.)
+          indicators *= static_cast<float>(1. / max_k);
+        if (max_c > 0.)
+          indicators.add(static_cast<float>(1. / max_c), pressure);
+      }
+    const unsigned int refined =
+      Refinement::mark(triangulation, indicators, refinement_parameters, zone);
+
+    // Transfer the solution: the next solve starts from it.
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
+    triangulation.prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(solution_ghosted);
+    triangulation.execute_coarsening_and_refinement();
+    setup_dofs();
+    transfer.interpolate(solution);
+    // New nodes on the Dirichlet boundaries take their prescribed values,
+    // hanging nodes follow their parents.
+    boundary_constraints(end_time, false).distribute(solution);
+    solution_ghosted = solution;
+    update_penalty_scale();
+    return refined;
+  }
+
+  template <int dim>
   const Report &
   Simulator<dim>::run(ParameterHandler &prm)
   {
@@ -908,45 +1089,72 @@ namespace Signorini
               }
             t = t_new;
             ++step;
-            report.newton_iterations += stats.iterations;
-            record.time              = t;
-            record.newton_iterations = stats.iterations;
-            record.backtracks        = stats.backtracks;
-            record.regularized       = stats.regularized_steps;
-            record.linear_iterations = stats.linear_iterations;
-            record.cuts_before       = cuts;
-            record.residual          = stats.residual;
-            record.energy            = stats.evaluation.value;
-            record.min_J             = stats.evaluation.min_J;
-            cuts = 0;
-            report.final_time = t;
-
-            solution_ghosted = solution;
-            {
-              TimerOutput::Scope scope(*timer, "postprocessing");
-              report.quantities =
-                postprocessor->compute_quantities(solution_ghosted, t);
-              if (contact || two_body)
-                for (const auto &q : contact_quantities(record))
-                  report.quantities.push_back(q);
-              if (report.derivative_test_errors >= 0)
-                {
-                  Quantity q;
-                  q.name  = "ipopt_derivative_test_errors";
-                  q.value = report.derivative_test_errors;
-                  report.quantities.push_back(q);
-                }
-            }
-            report.steps.push_back(record);
-            {
-              TimerOutput::Scope scope(*timer, "output");
-              postprocessor->write_output(solution_ghosted, t, step,
-                                          t >= end_time);
-            }
+            record.cuts_before = cuts;
+            cuts               = 0;
+            complete_step(t, step, stats, record, "solution");
             // Grow back towards the requested step after easy steps.
             if (stats.iterations <= 5 * std::max<std::size_t>(1, record.stages.size()) &&
                 dt < full_step)
               dt = std::min(2. * dt, full_step);
+          }
+        // Adaptive refinement cycles: the final load again on each new
+        // mesh, from the solution transferred from the previous one.
+        auto record_cycle = [&](const unsigned int cycle,
+                                const unsigned int iterations,
+                                const unsigned int refined,
+                                const double       cycle_seconds) {
+          Report::Cycle c;
+          c.cycle             = cycle;
+          c.n_cells           = report.n_cells;
+          c.n_dofs            = report.n_dofs;
+          c.contact_nodes     = report.contact_nodes;
+          c.newton_iterations = iterations;
+          c.refined_cells     = refined;
+          c.h_min             = report.h_min;
+          c.cycle_seconds     = cycle_seconds;
+          c.wall_seconds =
+            setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
+          c.quantities = report.quantities;
+          report.cycles.push_back(c);
+        };
+        if (refinement_parameters.cycles > 0)
+          {
+            record_cycle(0, report.newton_iterations, 0,
+                         setup_seconds +
+                           Utilities::MPI::max(run_timer.wall_time(), comm));
+            TimerOutput::Scope scope(*timer, "output");
+            postprocessor->write_output(solution_ghosted, 0, 0, true, "refinement");
+          }
+        for (unsigned int cycle = 1; cycle <= refinement_parameters.cycles; ++cycle)
+          {
+            Timer              cycle_timer;
+            const unsigned int refined = refine_mesh();
+            pcout << "Refinement cycle " << cycle << ": " << refined
+                  << " cells refined, " << report.n_cells << " cells, "
+                  << report.n_dofs << " DoFs";
+            if (contact || two_body)
+              pcout << ", " << report.contact_nodes << " contact nodes";
+            pcout << std::endl;
+            NewtonMinimizer::Statistics stats;
+            Report::Step                record{};
+            if (!solve_load_step(end_time, stats, record))
+              {
+                // The previous mesh's solution is the last one on disk.
+                std::ostringstream msg;
+                msg << "refinement cycle " << cycle << " (" << report.n_dofs
+                    << " DoFs) failed at t = " << end_time << ": "
+                    << stats.reason;
+                throw SolveFailure(msg.str());
+              }
+            ++step;
+            complete_step(end_time, step, stats, record, "");
+            {
+              TimerOutput::Scope scope(*timer, "output");
+              postprocessor->write_output(solution_ghosted, cycle, cycle, true,
+                                          "refinement");
+            }
+            record_cycle(cycle, stats.iterations, refined,
+                         Utilities::MPI::max(cycle_timer.wall_time(), comm));
           }
         report.status = "converged";
       }
@@ -972,6 +1180,12 @@ namespace Signorini
         pcout << std::endl;
       }
 
+    {
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      report.peak_memory_mb =
+        Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024., comm);
+    }
     report.timing["setup"] = setup_seconds;
     report.timing["total"] =
       setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
@@ -1005,6 +1219,7 @@ namespace Signorini
     mesh["h min"]  = report.h_min;
     mesh["h max"]  = report.h_max;
     j["mpi ranks"] = report.n_ranks;
+    j["peak memory MB"] = report.peak_memory_mb;
     j["threads per rank"] = MultithreadInfo::n_threads();
     Json materials_json = Json::array();
     for (const auto &m : report.materials)
@@ -1028,6 +1243,11 @@ namespace Signorini
           contact ? contact->boundary_id() : two_body->boundary_id());
         c[contact ? "foundation" : "target"] = report.foundation;
         c["nodes"]              = report.contact_nodes;
+        c["hanging nodes"] =
+          (contact ? static_cast<const Contact::PenaltyTerm<dim> &>(*contact) :
+                     static_cast<const Contact::PenaltyTerm<dim> &>(*two_body))
+            .contact_nodes_on_boundary()
+            .n_hanging();
         c["mean mesh size"]     = contact ? contact->mean_mesh_size() :
                                             two_body->mean_mesh_size();
         c["min mesh size"]      = contact ? contact->min_mesh_size() :
@@ -1106,6 +1326,39 @@ namespace Signorini
         steps.push_back(o);
       }
     j["steps"] = steps;
+    if (refinement_parameters.cycles > 0 || refinement_parameters.band_refinements > 0)
+      {
+        Json &r = j["mesh refinement"];
+        r["estimator"]                = refinement_parameters.estimator_name();
+        r["strategy"]                 = refinement_parameters.strategy ==
+                                RefinementParameters::Strategy::fraction ?
+                                          "fraction" :
+                                          "number";
+        r["refine fraction"]          = refinement_parameters.refine_fraction;
+        r["coarsen fraction"]         = refinement_parameters.coarsen_fraction;
+        r["maximum level"]            = refinement_parameters.max_level;
+        r["contact band refinements"] = refinement_parameters.band_refinements;
+        Json cycles = Json::array();
+        for (const auto &c : report.cycles)
+          {
+            Json o               = Json::object();
+            o["cycle"]           = c.cycle;
+            o["cells"]           = c.n_cells;
+            o["dofs"]            = c.n_dofs;
+            o["contact nodes"]   = c.contact_nodes;
+            o["refined cells"]   = c.refined_cells;
+            o["h min"]           = c.h_min;
+            o[iterations]        = c.newton_iterations;
+            o["cycle wall time [s]"] = c.cycle_seconds;
+            o["wall time since start [s]"] = c.wall_seconds;
+            Json q = Json::object();
+            for (const auto &qq : c.quantities)
+              q[qq.name] = qq.value;
+            o["quantities"] = q;
+            cycles.push_back(o);
+          }
+        r["cycles"] = cycles;
+      }
     Json quantities = Json::object();
     for (const auto &q : report.quantities)
       {
@@ -1132,6 +1385,27 @@ namespace Signorini
     std::ofstream out(output_directory + "/summary.json");
     j.write(out);
     out << "\n";
+
+    if (!report.cycles.empty())
+      {
+        std::ofstream cycles_csv(output_directory + "/refinement_cycles.csv");
+        cycles_csv << "cycle,cells,dofs,contact_nodes,refined_cells,h_min,"
+                   << (method == "ipopt" ? "ipopt" : "newton")
+                   << "_iterations,cycle_wall_time,wall_time_since_start";
+        for (const auto &q : report.cycles.front().quantities)
+          cycles_csv << "," << q.name;
+        cycles_csv << "\n" << std::setprecision(12);
+        for (const auto &c : report.cycles)
+          {
+            cycles_csv << c.cycle << "," << c.n_cells << "," << c.n_dofs << ","
+                       << c.contact_nodes << "," << c.refined_cells << ","
+                       << c.h_min << "," << c.newton_iterations << ","
+                       << c.cycle_seconds << "," << c.wall_seconds;
+            for (const auto &q : c.quantities)
+              cycles_csv << "," << q.value;
+            cycles_csv << "\n";
+          }
+      }
 
     std::ofstream csv(output_directory + "/load_steps.csv");
     csv << "step,time," << (method == "ipopt" ? "ipopt" : "newton")

@@ -75,12 +75,17 @@ namespace Signorini
     std::vector<Quantity>
     compute_quantities(const VectorType &u, const double time);
 
-    /// Write the graphical output of load step @p step if it is due.
+    /**
+     * Write the graphical output of load step @p step if it is due, as
+     * part of the series @p series (its files are series-NNNN.*, indexed
+     * by @p time in series.pvd or series.xdmf).
+     */
     void
     write_output(const VectorType  &u,
                  const double       time,
                  const unsigned int step,
-                 const bool         last_step);
+                 const bool         last_step,
+                 const std::string &series = "solution");
 
     /**
      * Write the state @p u outside the solution series, as
@@ -127,8 +132,8 @@ namespace Signorini
     std::string  format = "vtu";
     unsigned int interval = 1;
     std::string  screen_verbosity = "normal";
-    std::vector<std::pair<double, std::string>> pvd_records;
-    std::vector<XDMFEntry>                      xdmf_entries;
+    std::map<std::string, std::vector<std::pair<double, std::string>>> pvd_records;
+    std::map<std::string, std::vector<XDMFEntry>>                      xdmf_entries;
     bool                                        reactions_header_written = false;
   };
 } // namespace Signorini

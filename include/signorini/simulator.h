@@ -14,6 +14,7 @@
 #include <signorini/mesh.h>
 #include <signorini/newton.h>
 #include <signorini/postprocess.h>
+#include <signorini/refinement.h>
 #include <signorini/types.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -64,6 +65,22 @@ namespace Signorini
       unsigned long long pairs = 0;         // two bodies: evaluated pairs
     };
 
+    /// One adaptive refinement cycle: the mesh it solved on and what it
+    /// found (cycle 0 is the load path on the initial mesh).
+    struct Cycle
+    {
+      unsigned int          cycle = 0;
+      unsigned long long    n_cells = 0;
+      unsigned long long    n_dofs  = 0;
+      unsigned int          contact_nodes     = 0;
+      unsigned int          newton_iterations = 0; // of this cycle
+      unsigned int          refined_cells     = 0; // flagged to make its mesh
+      double                h_min = 0.;
+      double                cycle_seconds = 0.;  // wall time of this cycle
+      double                wall_seconds  = 0.;  // since the run started
+      std::vector<Quantity> quantities;
+    };
+
     std::string              scene;
     std::string              parameter_file;
     std::string              output_directory;
@@ -83,6 +100,8 @@ namespace Signorini
     unsigned int             step_cuts         = 0;
     unsigned int             newton_iterations = 0;
     std::vector<Step>        steps;
+    std::vector<Cycle>       cycles; // with Mesh refinement > Number of cycles > 0
+    double                   peak_memory_mb = 0.; // largest VmHWM of the ranks
     // Contact.
     std::string  contact_type = "none";
     std::string  foundation;
@@ -139,6 +158,21 @@ namespace Signorini
     boundary_constraints(const double time, const bool homogeneous) const;
     AffineConstraints<double>
     increment_constraints(const double time) const;
+    /// The penalty's scale mu_0 from the current contact mesh size.
+    void
+    update_penalty_scale();
+    /// Quantities, the step record and the graphical output after a
+    /// converged solve at time @p t (step @p step of series @p series).
+    void
+    complete_step(const double                       t,
+                  const unsigned int                 step,
+                  const NewtonMinimizer::Statistics &stats,
+                  Report::Step                      &record,
+                  const std::string                 &series);
+    /// Estimate, mark, refine and coarsen, and transfer the solution to the
+    /// new mesh. Returns the number of cells flagged for refinement.
+    unsigned int
+    refine_mesh();
     bool
     solve_load_step(const double                 time,
                     NewtonMinimizer::Statistics &stats,
@@ -171,6 +205,7 @@ namespace Signorini
     Contact::ContinuationParameters          continuation_parameters;
     typename IpoptSolver<dim>::Parameters    ipopt_parameters;
     Contact::HertzReference                  hertz;
+    RefinementParameters                     refinement_parameters;
     std::set<types::material_id>             incompressible_ids;
 
     // Discretisation.

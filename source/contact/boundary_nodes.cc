@@ -39,6 +39,10 @@ namespace Signorini
       scalar_fe = std::make_unique<FE_Q<dim>>(fe.degree);
       scalar_dof_handler.reinit(dof_handler.get_triangulation());
       scalar_dof_handler.distribute_dofs(*scalar_fe);
+      scalar_hanging.clear();
+      scalar_hanging.reinit(DoFTools::extract_locally_relevant_dofs(scalar_dof_handler));
+      DoFTools::make_hanging_node_constraints(scalar_dof_handler, scalar_hanging);
+      scalar_hanging.close();
 
       // Tributary weights and mean adjacent face size, summed over the
       // contact faces of the locally owned cells into the DoF owners.
@@ -64,7 +68,17 @@ namespace Signorini
                       double w = 0.;
                       for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
                         w += fe_face.shape_value(i, q) * fe_face.JxW(q);
-                      weight(dofs[i]) += w;
+                      // A hanging node's share goes to the nodes it
+                      // follows, with its constraint weights: the
+                      // tributary weights of the contact nodes then still
+                      // add up to the area of Gamma_C, and a node next to
+                      // a refinement edge gets no pressure spike.
+                      if (hanging_constraints.is_constrained(dofs[i]))
+                        for (const auto &[parent, c] :
+                             *hanging_constraints.get_constraint_entries(dofs[i]))
+                          weight(parent) += c * w;
+                      else
+                        weight(dofs[i]) += w;
                       face_size(dofs[i]) += diameter;
                       face_count(dofs[i]) += 1.;
                     }
@@ -77,7 +91,7 @@ namespace Signorini
       // (the owner of a DoF may touch the boundary only through a ghost
       // cell).
       node_list.clear();
-      std::set<types::global_dof_index> seen;
+      std::set<types::global_dof_index> seen, hanging;
       const Quadrature<dim> support(fe.base_element(0).get_unit_support_points());
       FEValues<dim> fe_support(mapping, fe, support, update_quadrature_points);
       std::vector<types::global_dof_index> scalar_dofs(scalar_fe->n_dofs_per_cell());
@@ -98,6 +112,8 @@ namespace Signorini
                     if (ci.first != first || !fe.has_support_on_face(i, f))
                       continue;
                     const types::global_dof_index dof = dofs[i];
+                    if (owned.is_element(dof) && hanging_constraints.is_constrained(dof))
+                      hanging.insert(dof);
                     if (!owned.is_element(dof) || seen.count(dof) > 0 ||
                         hanging_constraints.is_constrained(dof))
                       continue;
@@ -122,6 +138,8 @@ namespace Signorini
                 [](const auto &a, const auto &b) { return a.dofs[0] < b.dofs[0]; });
       n_global_nodes =
         Utilities::MPI::sum(static_cast<unsigned int>(node_list.size()), comm);
+      n_hanging_nodes =
+        Utilities::MPI::sum(static_cast<unsigned int>(hanging.size()), comm);
       double h_sum = 0., h_smallest = std::numeric_limits<double>::max();
       for (const auto &n : node_list)
         {
@@ -154,6 +172,24 @@ namespace Signorini
           fields[f] = field;
           data_out.add_data_vector(scalar_dof_handler, fields[f], names[f]);
         }
+    }
+
+    template <int dim>
+    VectorType
+    BoundaryNodes<dim>::nodal_field(const std::vector<double> &values) const
+    {
+      const MPI_Comm  comm     = dof_handler.get_communicator();
+      const IndexSet &owned    = scalar_dof_handler.locally_owned_dofs();
+      const IndexSet  relevant = DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
+      VectorType      field(owned, comm);
+      for (unsigned int k = 0; k < node_list.size(); ++k)
+        if (owned.is_element(node_list[k].scalar_dof))
+          field(node_list[k].scalar_dof) = values[k];
+      field.compress(VectorOperation::insert);
+      scalar_hanging.distribute(field);
+      VectorType ghosted(owned, relevant, comm);
+      ghosted = field;
+      return ghosted;
     }
 
     template <int dim>

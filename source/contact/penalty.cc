@@ -26,6 +26,9 @@ namespace Signorini
       Evaluation e = energy.evaluate(u, time, constraints, rhs, hessian);
       if (!e.admissible)
         return e;
+      std::unique_ptr<TimerOutput::Scope> scope;
+      if (timer)
+        scope = std::make_unique<TimerOutput::Scope>(*timer, "contact");
       if (!contact.admissible(u))
         {
           e.admissible = false;

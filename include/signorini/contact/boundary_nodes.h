@@ -66,6 +66,12 @@ namespace Signorini
       {
         return n_global_nodes;
       }
+      /// Hanging nodes on the boundary (left out), on all ranks.
+      unsigned int
+      n_hanging() const
+      {
+        return n_hanging_nodes;
+      }
       double
       mean_mesh_size() const
       {
@@ -86,6 +92,21 @@ namespace Signorini
       add_fields(DataOut<dim>                           &data_out,
                  const std::vector<std::string>          &names,
                  const std::vector<std::vector<double>> &values);
+
+      /**
+       * A nodal field (one value per owned node) as a ghosted vector on
+       * scalar_dofs(), with the values of hanging nodes interpolated from
+       * the nodes they follow and zero away from the boundary (collective).
+       */
+      VectorType
+      nodal_field(const std::vector<double> &values) const;
+
+      /// The scalar Q_p DoFs the nodal fields live on.
+      const DoFHandler<dim> &
+      scalar_dofs() const
+      {
+        return scalar_dof_handler;
+      }
 
       /**
        * Gather @p rows (one per owned node) on rank 0, sort them and
@@ -113,11 +134,13 @@ namespace Signorini
       const Mapping<dim>            &mapping;
       std::vector<BoundaryNode<dim>> node_list;
       unsigned int                   n_global_nodes = 0;
+      unsigned int                   n_hanging_nodes  = 0;
       double                         mean_h         = 0.;
       double                         min_h          = 0.;
 
       std::unique_ptr<FE_Q<dim>> scalar_fe;
       DoFHandler<dim>            scalar_dof_handler;
+      AffineConstraints<double>  scalar_hanging;
       std::vector<VectorType>    fields;
     };
   } // namespace Contact

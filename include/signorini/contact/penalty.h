@@ -1,10 +1,12 @@
 #pragma once
 
+#include <signorini/contact/boundary_nodes.h>
 #include <signorini/energy_functional.h>
 #include <signorini/newton.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <functional>
 #include <limits>
@@ -64,6 +66,19 @@ namespace Signorini
         (void)u;
         return false;
       }
+
+      /// The boundary id of Gamma_C.
+      virtual types::boundary_id
+      contact_boundary_id() const = 0;
+
+      /// The nodes of the contact boundary Gamma_C (this rank's).
+      virtual const BoundaryNodes<dim> &
+      contact_nodes_on_boundary() const = 0;
+
+      /// The contact pressure at each node of contact_nodes_on_boundary()
+      /// for the state @p u with nodal @p forces (local).
+      virtual std::vector<double>
+      nodal_pressures(const VectorType &u, const std::vector<double> &forces) const = 0;
 
       /// Whether the state @p u is one the model can represent (collective).
       virtual bool
@@ -126,6 +141,10 @@ namespace Signorini
                const AffineConstraints<double> &constraints,
                VectorType                      *rhs,
                MatrixType                      *hessian) override;
+
+      /// If set, the contact term's share of evaluate() is timed in its
+      /// section "contact" (inside the caller's "assembly").
+      TimerOutput *timer = nullptr;
 
       double
       max_step(const VectorType &u, const VectorType &d) override

@@ -151,6 +151,28 @@ namespace Signorini
         return {s.max_penetration_ratio, s.n_active};
       }
 
+      types::boundary_id
+      contact_boundary_id() const override
+      {
+        return contact_boundary;
+      }
+
+      const BoundaryNodes<dim> &
+      contact_nodes_on_boundary() const override
+      {
+        return boundary;
+      }
+
+      std::vector<double>
+      nodal_pressures(const VectorType          &u,
+                      const std::vector<double> &forces) const override
+      {
+        std::vector<double> p(contact_nodes().size());
+        for (unsigned int k = 0; k < p.size(); ++k)
+          p[k] = pressure(contact_nodes()[k], evaluate(contact_nodes()[k], u), forces[k]);
+        return p;
+      }
+
       /// Penetration and forces of the state @p u with nodal forces
       /// @p forces (one per owned node).
       Summary

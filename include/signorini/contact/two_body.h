@@ -205,6 +205,27 @@ namespace Signorini
       bool
       admissible(const VectorType &u) const override;
 
+      types::boundary_id
+      contact_boundary_id() const override
+      {
+        return contact_boundary;
+      }
+
+      const BoundaryNodes<dim> &
+      contact_nodes_on_boundary() const override
+      {
+        return boundary;
+      }
+
+      /// |f_k| / w_k: the force record's magnitude per unit area.
+      std::vector<double>
+      nodal_pressures(const VectorType          &u,
+                      const std::vector<double> &forces) const override
+      {
+        (void)u;
+        return node_pressures(forces);
+      }
+
       /// Nodes of Gamma_C; the force record holds dim numbers per node.
       const std::vector<BoundaryNode<dim>> &
       nodes() const

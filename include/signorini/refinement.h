@@ -1,0 +1,129 @@
+#pragma once
+
+#include <signorini/contact/boundary_nodes.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * The "Mesh refinement" subsection: adaptive refinement cycles within a
+   * scene (solve, estimate, refine and coarsen, transfer the solution as
+   * the next initial guess, solve again), and an initial refinement of the
+   * potential contact zone only.
+   */
+  struct RefinementParameters
+  {
+    enum class Estimator
+    {
+      kelly,    // gradient jumps of the displacement across faces
+      contact,  // changes of the contact pressure along Gamma_C
+      combined  // both, each scaled by its largest value
+    };
+    enum class Strategy
+    {
+      fraction, // refine the cells holding this fraction of the total
+      number    // refine this fraction of the cells
+    };
+
+    unsigned int cycles           = 0;
+    Estimator    estimator        = Estimator::combined;
+    Strategy     strategy         = Strategy::fraction;
+    double       refine_fraction  = 0.3;
+    double       coarsen_fraction = 0.;
+    unsigned int max_level        = 12;
+    unsigned int band_refinements = 0;
+    double       band_width       = 0.;
+    double       band_gap         = -1.;
+    bool         uniform_zone     = true;
+    double       zone_depth       = 1.;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::string
+    estimator_name() const;
+  };
+
+  namespace Refinement
+  {
+    /**
+     * Refine, @p parameters.band_refinements times, the cells within
+     * band_width of the part of the contact boundary @p contact_id whose
+     * initial gap (@p gap, a function of the reference position) is at
+     * most band_gap (all of it if band_gap < 0): the potential contact
+     * zone. Independent of the partition (collective).
+     */
+    template <int dim>
+    void
+    refine_contact_band(parallel::distributed::Triangulation<dim> &triangulation,
+                        const types::boundary_id                    contact_id,
+                        const RefinementParameters                 &parameters,
+                        const std::function<double(const Point<dim> &)> &gap);
+
+    /// Kelly's indicator of the displacement @p u (ghosted), per active
+    /// cell (values on the locally owned cells).
+    template <int dim>
+    Vector<float>
+    kelly(const Mapping<dim>    &mapping,
+          const DoFHandler<dim> &dof_handler,
+          const VectorType      &u);
+
+    /**
+     * The contact indicator per active cell: for each face of the cell on
+     * Gamma_C, (max - min of the nodal contact pressure over the face's
+     * nodes) times sqrt(|F|), the L2(F) size of the pressure's
+     * interpolation error. Large on the contact zone's edges (where p
+     * falls to 0) and where p varies quickly; zero away from contact.
+     * @p pressures has one value per node of @p nodes (collective).
+     */
+    template <int dim>
+    Vector<float>
+    contact(const DoFHandler<dim>             &dof_handler,
+            const Contact::BoundaryNodes<dim> &nodes,
+            const types::boundary_id           contact_id,
+            const std::vector<double>         &pressures);
+
+    /**
+     * The cells (by active cell index; locally owned ones) with a vertex
+     * within @p depth times the extent of the contact zone (the nodes of
+     * @p nodes with a positive pressure, reference positions) of one of
+     * its nodes: the region whose stresses the contact sets (collective).
+     */
+    template <int dim>
+    std::vector<bool>
+    contact_zone(const DoFHandler<dim>             &dof_handler,
+                 const Contact::BoundaryNodes<dim> &nodes,
+                 const std::vector<double>         &pressures,
+                 const double                       depth);
+
+    /**
+     * Set refinement and coarsening flags from @p indicators with the
+     * strategy of @p parameters, never beyond its maximum level, and never
+     * on a cell whose indicator is zero. If @p zone is not empty and
+     * 'Uniform contact zone' is on, every cell of the zone below the
+     * finest level the marked zone cells will reach is flagged too, and
+     * none is coarsened: the zone keeps one mesh size. (Collective.)
+     * Returns the number of cells flagged for refinement on all ranks.
+     */
+    template <int dim>
+    unsigned int
+    mark(parallel::distributed::Triangulation<dim> &triangulation,
+         const Vector<float>                       &indicators,
+         const RefinementParameters                &parameters,
+         const std::vector<bool>                   &zone = {});
+  } // namespace Refinement
+} // namespace Signorini

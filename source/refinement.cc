@@ -1,0 +1,379 @@
+#include <signorini/input_error.h>
+#include <signorini/refinement.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/numerics/error_estimator.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace Signorini
+{
+  void
+  RefinementParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Number of cycles",
+                      "0",
+                      Patterns::Integer(0, 30),
+                      "Adaptive refinement cycles after the load path is "
+                      "solved: estimate, refine and coarsen, transfer the "
+                      "solution to the new mesh as the initial guess, and "
+                      "solve the final load again. 0: the mesh stays as "
+                      "built. summary.json and refinement_cycles.csv record "
+                      "every cycle; the VTU of each is in refinement.pvd.");
+    prm.declare_entry("Estimator",
+                      "combined",
+                      Patterns::Selection("kelly|contact|combined"),
+                      "Which cells to refine. kelly: jumps of the "
+                      "displacement gradient across faces (stress "
+                      "concentrations). contact: how much the contact "
+                      "pressure changes across each face of the contact "
+                      "boundary (the contact zone's edges and where the "
+                      "pressure varies fast); zero away from contact. "
+                      "combined: the sum of both, each divided by its "
+                      "largest value.");
+    prm.declare_entry("Strategy",
+                      "fraction",
+                      Patterns::Selection("fraction|number"),
+                      "fraction: refine the cells with the largest "
+                      "indicators that together hold 'Refine fraction' of "
+                      "the total (and coarsen those holding 'Coarsen "
+                      "fraction'). number: refine that fraction of the "
+                      "cells (and coarsen that fraction). Cells with a zero "
+                      "indicator are never refined.");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0., 1.),
+                      "See Strategy [-].");
+    prm.declare_entry("Coarsen fraction",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "See Strategy [-]. Refine plus coarsen fraction must "
+                      "not exceed 1.");
+    prm.declare_entry("Maximum level",
+                      "12",
+                      Patterns::Integer(1, 30),
+                      "No cell is refined beyond this level (the coarse mesh "
+                      "is level 0; Global and Local refinements count).");
+    prm.declare_entry("Uniform contact zone",
+                      "true",
+                      Patterns::Bool(),
+                      "Keep the cells near the contact zone (within 'Contact "
+                      "zone depth' times its extent of the nodes with a "
+                      "pressure) at one level: when any of them is refined, "
+                      "all coarser ones are too. On a graded mesh the nodal "
+                      "contact pressure zigzags by about the size of the "
+                      "grading (measured: +-0.5% on Hertz), while on an "
+                      "evenly spaced one it is smooth and converges faster.");
+    prm.declare_entry("Contact zone depth",
+                      "1",
+                      Patterns::Double(0.),
+                      "See 'Uniform contact zone' [-]: the stresses under a "
+                      "Hertz contact vary over a depth of about the contact "
+                      "width.");
+    prm.declare_entry("Contact band refinements",
+                      "0",
+                      Patterns::Integer(0, 20),
+                      "Before the first solve, refine this many times the "
+                      "cells near the potential contact zone only: the part "
+                      "of the contact boundary (Contact > Contact boundary "
+                      "id) whose initial gap is at most 'Contact band gap', "
+                      "and the cells within 'Contact band width' of it.");
+    prm.declare_entry("Contact band width",
+                      "0",
+                      Patterns::Double(0.),
+                      "Distance from the potential contact zone within which "
+                      "cells are refined [length]; 0: the cells that touch "
+                      "it.");
+    prm.declare_entry("Contact band gap",
+                      "-1",
+                      Patterns::Double(),
+                      "The potential contact zone: the points of the contact "
+                      "boundary whose gap in the reference configuration is "
+                      "at most this [length] (to the foundation psi, or to "
+                      "the bounding box of body 2). Negative: the whole "
+                      "contact boundary.");
+  }
+
+  void
+  RefinementParameters::parse_parameters(ParameterHandler &prm)
+  {
+    cycles = prm.get_integer("Number of cycles");
+    const std::string e = prm.get("Estimator");
+    estimator = (e == "kelly" ? Estimator::kelly :
+                 e == "contact" ? Estimator::contact : Estimator::combined);
+    strategy = (prm.get("Strategy") == "number" ? Strategy::number :
+                                                  Strategy::fraction);
+    refine_fraction  = prm.get_double("Refine fraction");
+    coarsen_fraction = prm.get_double("Coarsen fraction");
+    if (refine_fraction + coarsen_fraction > 1.)
+      throw InputError("Mesh refinement > Coarsen fraction",
+                       "Refine fraction + Coarsen fraction = " +
+                         std::to_string(refine_fraction + coarsen_fraction) +
+                         " exceeds 1");
+    max_level        = prm.get_integer("Maximum level");
+    band_refinements = prm.get_integer("Contact band refinements");
+    band_width       = prm.get_double("Contact band width");
+    band_gap         = prm.get_double("Contact band gap");
+    uniform_zone     = prm.get_bool("Uniform contact zone");
+    zone_depth       = prm.get_double("Contact zone depth");
+    if (!std::isfinite(band_width) || !std::isfinite(band_gap))
+      throw InputError("Mesh refinement > Contact band width",
+                       "the band width and gap must be finite numbers");
+  }
+
+  std::string
+  RefinementParameters::estimator_name() const
+  {
+    return estimator == Estimator::kelly   ? "kelly" :
+           estimator == Estimator::contact ? "contact" :
+                                             "combined";
+  }
+
+  namespace Refinement
+  {
+    template <int dim>
+    void
+    refine_contact_band(parallel::distributed::Triangulation<dim> &triangulation,
+                        const types::boundary_id                    contact_id,
+                        const RefinementParameters                 &parameters,
+                        const std::function<double(const Point<dim> &)> &gap)
+    {
+      const MPI_Comm comm = triangulation.get_communicator();
+      for (unsigned int round = 0; round < parameters.band_refinements; ++round)
+        {
+          // The vertices of the potential contact zone, from every rank.
+          std::vector<Point<dim>> local;
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == contact_id)
+                  for (const auto v : cell->face(f)->vertex_indices())
+                    {
+                      const Point<dim> &X = cell->face(f)->vertex(v);
+                      if (parameters.band_gap < 0. || gap(X) <= parameters.band_gap)
+                        local.push_back(X);
+                    }
+          std::vector<Point<dim>> zone;
+          for (const auto &part : Utilities::MPI::all_gather(comm, local))
+            zone.insert(zone.end(), part.begin(), part.end());
+          if (zone.empty())
+            return;
+          const auto tree = pack_rtree(zone);
+
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                static_cast<unsigned int>(cell->level()) < parameters.max_level)
+              {
+                const double tolerance = 1e-10 * cell->diameter();
+                for (const auto v : cell->vertex_indices())
+                  {
+                    std::vector<Point<dim>> nearest;
+                    tree.query(boost::geometry::index::nearest(cell->vertex(v), 1),
+                               std::back_inserter(nearest));
+                    if (!nearest.empty() &&
+                        nearest[0].distance(cell->vertex(v)) <=
+                          parameters.band_width + tolerance)
+                      {
+                        cell->set_refine_flag();
+                        break;
+                      }
+                  }
+              }
+          triangulation.execute_coarsening_and_refinement();
+        }
+    }
+
+    template <int dim>
+    Vector<float>
+    kelly(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler, const VectorType &u)
+    {
+      Vector<float> indicators(dof_handler.get_triangulation().n_active_cells());
+      KellyErrorEstimator<dim>::estimate(mapping,
+                                         dof_handler,
+                                         QGauss<dim - 1>(dof_handler.get_fe().degree + 1),
+                                         {},
+                                         u,
+                                         indicators);
+      return indicators;
+    }
+
+    template <int dim>
+    Vector<float>
+    contact(const DoFHandler<dim>             &dof_handler,
+            const Contact::BoundaryNodes<dim> &nodes,
+            const types::boundary_id           contact_id,
+            const std::vector<double>         &pressures)
+    {
+      const auto   &tria = dof_handler.get_triangulation();
+      Vector<float> indicators(tria.n_active_cells());
+      const VectorType p = nodes.nodal_field(pressures);
+      const auto      &scalar = nodes.scalar_dofs();
+      const auto      &fe     = scalar.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : scalar.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            double eta = 0.;
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == contact_id)
+                {
+                  cell->get_dof_indices(dofs);
+                  double lo = std::numeric_limits<double>::max(), hi = -lo;
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    if (fe.has_support_on_face(i, f))
+                      {
+                        lo = std::min(lo, p[dofs[i]]);
+                        hi = std::max(hi, p[dofs[i]]);
+                      }
+                  eta += (hi - lo) * std::sqrt(cell->face(f)->measure());
+                }
+            indicators[cell->active_cell_index()] = eta;
+          }
+      return indicators;
+    }
+
+    template <int dim>
+    std::vector<bool>
+    contact_zone(const DoFHandler<dim>             &dof_handler,
+                 const Contact::BoundaryNodes<dim> &nodes,
+                 const std::vector<double>         &pressures,
+                 const double                       depth)
+    {
+      const auto       &tria = dof_handler.get_triangulation();
+      const MPI_Comm    comm = dof_handler.get_communicator();
+      std::vector<bool> zone(tria.n_active_cells(), false);
+      double            p_max = 0.;
+      for (const double p : pressures)
+        p_max = std::max(p_max, p);
+      p_max = Utilities::MPI::max(p_max, comm);
+      if (p_max <= 0.)
+        return zone;
+      // The nodes with a pressure, of every rank.
+      std::vector<Point<dim>> local;
+      double                  h = 0.;
+      for (unsigned int k = 0; k < pressures.size(); ++k)
+        if (pressures[k] > 1e-6 * p_max)
+          {
+            local.push_back(nodes.nodes()[k].X);
+            h = std::max(h, nodes.nodes()[k].h);
+          }
+      h = Utilities::MPI::max(h, comm);
+      std::vector<Point<dim>> points;
+      for (const auto &part : Utilities::MPI::all_gather(comm, local))
+        points.insert(points.end(), part.begin(), part.end());
+      Point<dim> lo = points[0], hi = points[0];
+      for (const auto &p : points)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::min(lo[d], p[d]);
+            hi[d] = std::max(hi[d], p[d]);
+          }
+      // The zone's extent (at least one element), times the depth factor.
+      const double radius = depth * std::max(lo.distance(hi), h);
+      const auto   tree   = pack_rtree(points);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            {
+              std::vector<Point<dim>> nearest;
+              tree.query(boost::geometry::index::nearest(cell->vertex(v), 1),
+                         std::back_inserter(nearest));
+              if (nearest[0].distance(cell->vertex(v)) <= radius)
+                {
+                  zone[cell->active_cell_index()] = true;
+                  break;
+                }
+            }
+      return zone;
+    }
+
+    template <int dim>
+    unsigned int
+    mark(parallel::distributed::Triangulation<dim> &triangulation,
+         const Vector<float>                       &indicators,
+         const RefinementParameters                &parameters,
+         const std::vector<bool>                   &zone)
+    {
+      if (parameters.strategy == RefinementParameters::Strategy::fraction)
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+          triangulation, indicators, parameters.refine_fraction,
+          parameters.coarsen_fraction);
+      else
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          triangulation, indicators, parameters.refine_fraction,
+          parameters.coarsen_fraction);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->refine_flag_set() &&
+            indicators[cell->active_cell_index()] <= 0.f)
+          cell->clear_refine_flag();
+      if (parameters.uniform_zone && !zone.empty())
+        {
+          // The finest level any zone cell reaches with these flags.
+          int target = -1;
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() && zone[cell->active_cell_index()])
+              target = std::max(target, cell->level() + (cell->refine_flag_set() ? 1 : 0));
+          target = Utilities::MPI::max(target, triangulation.get_communicator());
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() && zone[cell->active_cell_index()])
+              {
+                cell->clear_coarsen_flag();
+                if (cell->level() < target)
+                  cell->set_refine_flag();
+              }
+        }
+      unsigned int flagged = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->refine_flag_set())
+          {
+            if (static_cast<unsigned int>(cell->level()) >= parameters.max_level)
+              cell->clear_refine_flag();
+            else
+              ++flagged;
+          }
+      return Utilities::MPI::sum(flagged, triangulation.get_communicator());
+    }
+
+    template void
+    refine_contact_band<2>(parallel::distributed::Triangulation<2> &,
+                           const types::boundary_id,
+                           const RefinementParameters &,
+                           const std::function<double(const Point<2> &)> &);
+    template void
+    refine_contact_band<3>(parallel::distributed::Triangulation<3> &,
+                           const types::boundary_id,
+                           const RefinementParameters &,
+                           const std::function<double(const Point<3> &)> &);
+    template Vector<float>
+    kelly<2>(const Mapping<2> &, const DoFHandler<2> &, const VectorType &);
+    template Vector<float>
+    kelly<3>(const Mapping<3> &, const DoFHandler<3> &, const VectorType &);
+    template Vector<float>
+    contact<2>(const DoFHandler<2> &,
+               const Contact::BoundaryNodes<2> &, const types::boundary_id,
+               const std::vector<double> &);
+    template Vector<float>
+    contact<3>(const DoFHandler<3> &,
+               const Contact::BoundaryNodes<3> &, const types::boundary_id,
+               const std::vector<double> &);
+    template std::vector<bool>
+    contact_zone<2>(const DoFHandler<2> &, const Contact::BoundaryNodes<2> &,
+                    const std::vector<double> &, const double);
+    template std::vector<bool>
+    contact_zone<3>(const DoFHandler<3> &, const Contact::BoundaryNodes<3> &,
+                    const std::vector<double> &, const double);
+    template unsigned int
+    mark<2>(parallel::distributed::Triangulation<2> &, const Vector<float> &,
+            const RefinementParameters &, const std::vector<bool> &);
+    template unsigned int
+    mark<3>(parallel::distributed::Triangulation<3> &, const Vector<float> &,
+            const RefinementParameters &, const std::vector<bool> &);
+  } // namespace Refinement
+} // namespace Signorini
