@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake make g++ pkg-config ccache libdeal.ii-dev coinor-libipopt-dev
-          numdiff openmpi-bin gnuplot-nox python3)
+          numdiff openmpi-bin gnuplot-nox python3 python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -1,5 +1,6 @@
 #include <signorini/input_error.h>
 #include <signorini/run.h>
+#include <signorini/study.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -62,6 +63,8 @@ namespace Signorini
     print_usage(std::ostream &out)
     {
       out << "Usage: signorini FILE.prm\n"
+             "       signorini --study FILE.prm   (the accuracy-versus-time "
+             "study of its Study subsection)\n"
              "       signorini --print-parameters   (every entry with its "
              "default, pattern and documentation)\n"
              "       signorini --help\n\n"
@@ -111,6 +114,9 @@ namespace Signorini
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return success;
       }
+    const bool study = (args.size() == 2 && args[0] == "--study");
+    if (study)
+      args.erase(args.begin());
     if (args.size() != 1 || args[0].empty() || args[0][0] == '-')
       {
         if (root)
@@ -137,6 +143,8 @@ namespace Signorini
             throw InputError(file, essential_message(e.what()));
           }
 
+        if (study)
+          return Study::run(file, prm, MPI_COMM_WORLD);
         const unsigned int dim = prm.get_integer("Dimension");
         const Report report =
           (dim == 2 ? run_scene<2>(prm, file, quiet) :

@@ -1,5 +1,6 @@
 #include <signorini/input_error.h>
 #include <signorini/simulator.h>
+#include <signorini/study.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -65,6 +66,8 @@ namespace Signorini
     prm.enter_subsection("Mesh refinement");
     RefinementParameters::declare_parameters(prm);
     prm.leave_subsection();
+
+    Study::declare_parameters(prm);
 
     for (unsigned int b = 0; b < max_bodies; ++b)
       {
@@ -1115,6 +1118,9 @@ namespace Signorini
           c.wall_seconds =
             setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
           c.quantities = report.quantities;
+          for (const auto &entry :
+               timer->get_summary_data(TimerOutput::total_wall_time))
+            c.timing[entry.first] = Utilities::MPI::max(entry.second, comm);
           report.cycles.push_back(c);
         };
         if (refinement_parameters.cycles > 0)

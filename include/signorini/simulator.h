@@ -79,6 +79,7 @@ namespace Signorini
       double                cycle_seconds = 0.;  // wall time of this cycle
       double                wall_seconds  = 0.;  // since the run started
       std::vector<Quantity> quantities;
+      std::map<std::string, double> timing; // per phase, since the start
     };
 
     std::string              scene;

@@ -1,0 +1,514 @@
+#include <signorini/input_error.h>
+#include <signorini/json.h>
+#include <signorini/simulator.h>
+#include <signorini/study.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#ifndef SIGNORINI_SOURCE_DIR
+#  define SIGNORINI_SOURCE_DIR "."
+#endif
+
+namespace Signorini
+{
+  namespace Study
+  {
+    namespace
+    {
+      constexpr unsigned int max_variants = 8;
+
+      // Phases reported per row (TimerOutput sections of a run).
+      const std::vector<std::string> phases = {"assembly",
+                                               "contact",
+                                               "linear solve",
+                                               "line search",
+                                               "sparsity pattern",
+                                               "constraints",
+                                               "refinement",
+                                               "postprocessing",
+                                               "output"};
+
+      struct Variant
+      {
+        std::string              name;
+        std::string              settings;
+        std::string              series_entry;
+        std::vector<std::string> series_values;
+        std::string              key; // for error messages
+      };
+
+      struct Row
+      {
+        std::string                   variant;
+        std::string                   run;   // series value
+        int                           cycle = -1;
+        std::string                   status;
+        unsigned long long            cells = 0, dofs = 0;
+        unsigned int                  contact_nodes = 0;
+        unsigned int                  iterations    = 0;
+        double                        wall          = 0.;
+        double                        memory_mb     = 0.;
+        std::map<std::string, double> timing;
+        std::map<std::string, double> value, reference;
+      };
+
+      void
+      set_entry(ParameterHandler  &prm,
+                const std::string &path,
+                const std::string &value,
+                const std::string &key)
+      {
+        const auto parts = Utilities::split_string_list(path, '/');
+        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+          prm.enter_subsection(parts[i]);
+        try
+          {
+            prm.set(parts.back(), value);
+          }
+        catch (const std::exception &e)
+          {
+            for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+              prm.leave_subsection();
+            throw InputError(key, "cannot set '" + path + " = " + value +
+                                    "': " + essential_message(e.what()));
+          }
+        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+          prm.leave_subsection();
+      }
+
+      /// Apply "a/b/entry = value; ..." to @p prm.
+      void
+      apply(ParameterHandler &prm, const std::string &assignments, const std::string &key)
+      {
+        for (const auto &item : Utilities::split_string_list(assignments, ';'))
+          {
+            if (item.empty())
+              continue;
+            const auto eq = item.find('=');
+            if (eq == std::string::npos)
+              throw InputError(key, "'" + item + "' is not of the form "
+                                    "Subsection/Entry = value");
+            set_entry(prm,
+                      Utilities::trim(item.substr(0, eq)),
+                      Utilities::trim(item.substr(eq + 1)),
+                      key);
+          }
+      }
+
+
+      std::string
+      file_name(std::string s)
+      {
+        for (auto &c : s)
+          if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.')
+            c = '_';
+        return s;
+      }
+
+      void
+      reset_peak_memory()
+      {
+        // Linux: writing 5 to clear_refs resets VmHWM, so that each run of
+        // the study reports its own peak.
+        std::ofstream("/proc/self/clear_refs") << "5";
+      }
+
+      template <int dim>
+      Report
+      run_scene(ParameterHandler &prm, const std::string &file, MPI_Comm comm)
+      {
+        Simulator<dim> simulator(prm, file, true, comm);
+        return simulator.run(prm);
+      }
+    } // namespace
+
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      prm.declare_entry("Quantities",
+                        "",
+                        Patterns::List(Patterns::Anything()),
+                        "The quantities of the scene (names in summary.json) "
+                        "whose errors the study reports, e.g. hertz_a, "
+                        "hertz_p0. Only read by signorini --study.");
+      prm.declare_entry("Reference variant",
+                        "",
+                        Patterns::Anything(),
+                        "The variant (its Name) whose finest runs give the "
+                        "converged solution of the discrete model: Richardson "
+                        "extrapolation of its three finest runs when they "
+                        "converge monotonically, else its finest run.");
+      prm.declare_entry("Accuracy",
+                        "0.001",
+                        Patterns::Double(0.),
+                        "The relative error (against the converged model) at "
+                        "which the study reports, per variant, the first run "
+                        "reaching it for every quantity: its DoFs and wall "
+                        "time [-].");
+      prm.declare_entry("Write fields",
+                        "false",
+                        Patterns::Bool(),
+                        "Write the VTU fields of every run (costs time that "
+                        "the study then counts).");
+      for (unsigned int v = 0; v < max_variants; ++v)
+        {
+          prm.enter_subsection("Variant " + std::to_string(v + 1));
+          prm.declare_entry("Name", "", Patterns::Anything(),
+                            "The variant's name; empty: not run.");
+          prm.declare_entry("Settings",
+                            "",
+                            Patterns::Anything(),
+                            "Overrides of the scene's entries for this "
+                            "variant: 'Subsection/Entry = value; ...', e.g. "
+                            "'Solver/Method = ipopt; Mesh refinement/Number "
+                            "of cycles = 0'.");
+          prm.declare_entry("Series entry",
+                            "",
+                            Patterns::Anything(),
+                            "The entry whose values make the series, e.g. "
+                            "'Mesh/Global refinements'; empty: one run (whose "
+                            "refinement cycles, if any, make the series).");
+          prm.declare_entry("Series values",
+                            "",
+                            Patterns::List(Patterns::Anything()),
+                            "The values of the series entry, coarsest first.");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    int
+    run(const std::string &file, ParameterHandler &prm, MPI_Comm comm)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+      std::vector<std::string> quantities;
+      std::string              reference_variant;
+      double                   accuracy;
+      bool                     write_fields;
+      std::vector<Variant>     variants;
+      prm.enter_subsection("Study");
+      quantities        = Utilities::split_string_list(prm.get("Quantities"));
+      reference_variant = Utilities::trim(prm.get("Reference variant"));
+      accuracy          = prm.get_double("Accuracy");
+      write_fields      = prm.get_bool("Write fields");
+      for (unsigned int v = 0; v < max_variants; ++v)
+        {
+          prm.enter_subsection("Variant " + std::to_string(v + 1));
+          Variant variant;
+          variant.name = Utilities::trim(prm.get("Name"));
+          variant.key  = "Study > Variant " + std::to_string(v + 1);
+          variant.settings      = prm.get("Settings");
+          variant.series_entry  = Utilities::trim(prm.get("Series entry"));
+          variant.series_values = Utilities::split_string_list(prm.get("Series values"));
+          prm.leave_subsection();
+          if (variant.name.empty())
+            continue;
+          if (!variant.series_entry.empty() && variant.series_values.empty())
+            throw InputError(variant.key + " > Series values",
+                             "the series entry '" + variant.series_entry +
+                               "' has no values");
+          for (const auto &other : variants)
+            if (other.name == variant.name)
+              throw InputError(variant.key + " > Name",
+                               "two variants are called '" + variant.name + "'");
+          variants.push_back(variant);
+        }
+      prm.leave_subsection();
+      if (variants.empty())
+        throw InputError(file, "the study declares no variant (Study > Variant 1 > Name)");
+      if (quantities.empty())
+        throw InputError("Study > Quantities", "names no quantity");
+      if (std::none_of(variants.begin(), variants.end(),
+                       [&](const Variant &v) { return v.name == reference_variant; }))
+        throw InputError("Study > Reference variant",
+                         "'" + reference_variant + "' is not the Name of a variant");
+
+      std::string scene_output = prm.get("Output directory");
+      if (scene_output.empty())
+        {
+          std::string scene = prm.get("Scene name");
+          if (scene.empty())
+            scene = std::filesystem::path(file).stem().string();
+          scene_output = "output/" + scene;
+        }
+      const std::string directory = scene_output + "/study";
+      if (root)
+        std::filesystem::create_directories(directory);
+
+      // Check every variant's settings before the first run.
+      for (const auto &variant : variants)
+        {
+          ParameterHandler check;
+          ::Signorini::declare_parameters(check);
+          check.parse_input(file);
+          apply(check, variant.settings, variant.key + " > Settings");
+          if (!variant.series_entry.empty())
+            for (const auto &value : variant.series_values)
+              set_entry(check, variant.series_entry, value, variant.key + " > Series entry");
+        }
+
+      std::vector<Row> rows;
+      bool             all_converged = true;
+      for (const auto &variant : variants)
+        {
+          const std::vector<std::string> values =
+            variant.series_entry.empty() ? std::vector<std::string>{""} :
+                                           variant.series_values;
+          for (const auto &value : values)
+            {
+              ParameterHandler run_prm;
+              ::Signorini::declare_parameters(run_prm);
+              run_prm.parse_input(file);
+              apply(run_prm, variant.settings, variant.key + " > Settings");
+              if (!variant.series_entry.empty())
+                set_entry(run_prm, variant.series_entry, value,
+                          variant.key + " > Series entry");
+              const std::string out =
+                directory + "/" + file_name(variant.name) +
+                (value.empty() ? std::string() : "-" + file_name(value));
+              run_prm.set("Output directory", out);
+              run_prm.enter_subsection("Output");
+              run_prm.set("Verbosity", "quiet");
+              if (!write_fields)
+                run_prm.set("Format", "none");
+              run_prm.leave_subsection();
+              if (root)
+                std::cout << "Study: " << variant.name
+                          << (value.empty() ? "" : ", " + variant.series_entry +
+                                                     " = " + value)
+                          << " ..." << std::flush;
+              reset_peak_memory();
+              const unsigned int dim = run_prm.get_integer("Dimension");
+              const Report report = dim == 2 ? run_scene<2>(run_prm, file, comm) :
+                                               run_scene<3>(run_prm, file, comm);
+              all_converged &= (report.status == "converged");
+              if (root)
+                std::cout << " " << report.status << ", " << report.n_dofs
+                          << " DoFs, " << std::setprecision(3)
+                          << report.timing.at("total") << " s" << std::endl;
+              auto make_row = [&](const std::vector<Quantity> &qs) {
+                Row row;
+                row.variant   = variant.name;
+                row.run       = value;
+                row.status    = report.status;
+                row.memory_mb = report.peak_memory_mb;
+                for (const auto &q : qs)
+                  {
+                    row.value[q.name] = q.value;
+                    if (q.has_reference)
+                      row.reference[q.name] = q.reference;
+                  }
+                return row;
+              };
+              if (report.cycles.empty())
+                {
+                  Row row           = make_row(report.quantities);
+                  row.cells         = report.n_cells;
+                  row.dofs          = report.n_dofs;
+                  row.contact_nodes = report.contact_nodes;
+                  row.iterations    = report.newton_iterations;
+                  row.wall          = report.timing.at("total");
+                  row.timing        = report.timing;
+                  rows.push_back(row);
+                }
+              else
+                {
+                  unsigned int iterations = 0;
+                  for (const auto &c : report.cycles)
+                    {
+                      Row row = make_row(c.quantities);
+                      iterations += c.newton_iterations;
+                      row.cycle         = c.cycle;
+                      row.cells         = c.n_cells;
+                      row.dofs          = c.n_dofs;
+                      row.contact_nodes = c.contact_nodes;
+                      row.iterations    = iterations; // up to this cycle
+                      row.wall          = c.wall_seconds;
+                      row.timing        = c.timing;
+                      rows.push_back(row);
+                    }
+                }
+            }
+        }
+
+      // The converged solution of the discrete model.
+      std::vector<const Row *> finest;
+      for (const auto &row : rows)
+        if (row.variant == reference_variant && row.status == "converged")
+          finest.push_back(&row);
+      std::sort(finest.begin(), finest.end(),
+                [](const Row *a, const Row *b) { return a->dofs < b->dofs; });
+      std::map<std::string, double>      converged;
+      std::map<std::string, std::string> how;
+      std::map<std::string, double>      order;
+      for (const auto &q : quantities)
+        {
+          if (finest.empty() || finest.back()->value.count(q) == 0)
+            throw SolveFailure("the reference variant '" + reference_variant +
+                               "' has no converged run with quantity " + q);
+          const double q3 = finest.back()->value.at(q);
+          converged[q]    = q3;
+          how[q]          = "finest run";
+          if (finest.size() >= 3)
+            {
+              const Row   &r1 = *finest[finest.size() - 3];
+              const Row   &r2 = *finest[finest.size() - 2];
+              const double q1 = r1.value.at(q), q2 = r2.value.at(q);
+              const double d1 = q2 - q1, d2 = q3 - q2;
+              if (d1 * d2 > 0. && std::abs(d2) < std::abs(d1))
+                {
+                  const double ratio = d1 / d2;
+                  converged[q]       = q3 + d2 / (ratio - 1.);
+                  how[q]             = "Richardson extrapolation of the three finest runs";
+                  // Rate in h ~ DoFs^(-1/dim): log(ratio) / log(h1/h2).
+                  const double h_ratio =
+                    std::pow(static_cast<double>(r2.dofs) / r1.dofs,
+                             1. / prm.get_integer("Dimension"));
+                  order[q] = std::log(ratio) / std::log(h_ratio);
+                }
+            }
+        }
+
+      auto error = [](const double v, const double ref) {
+        return std::abs(v - ref) / std::abs(ref);
+      };
+      // Per variant: the first row (by wall time) within the accuracy.
+      struct Reached
+      {
+        bool               found = false;
+        unsigned long long dofs  = 0;
+        double             wall  = 0.;
+        std::string        run;
+        int                cycle = -1;
+      };
+      std::map<std::string, Reached> reached;
+      for (const auto &row : rows)
+        {
+          if (row.status != "converged")
+            continue;
+          bool ok = true;
+          for (const auto &q : quantities)
+            ok &= row.value.count(q) > 0 &&
+                  error(row.value.at(q), converged.at(q)) <= accuracy;
+          auto &r = reached[row.variant];
+          if (ok && (!r.found || row.wall < r.wall))
+            r = {true, row.dofs, row.wall, row.run, row.cycle};
+        }
+
+      if (root)
+        {
+          std::ofstream csv(directory + "/study.csv");
+          csv << "variant,run,cycle,status,cells,dofs,contact_nodes,iterations,"
+                 "wall_time,peak_memory_mb";
+          for (const auto &p : phases)
+            csv << ",time_" << file_name(p);
+          for (const auto &q : quantities)
+            csv << "," << q << "," << q << "_error_analytic," << q
+                << "_error_converged";
+          csv << "\n" << std::setprecision(10);
+          for (const auto &row : rows)
+            {
+              csv << row.variant << "," << row.run << "," << row.cycle << ","
+                  << row.status << "," << row.cells << "," << row.dofs << ","
+                  << row.contact_nodes << "," << row.iterations << "," << row.wall
+                  << "," << row.memory_mb;
+              for (const auto &p : phases)
+                csv << "," << (row.timing.count(p) ? row.timing.at(p) : 0.);
+              for (const auto &q : quantities)
+                {
+                  if (row.value.count(q) == 0)
+                    {
+                      csv << ",,,";
+                      continue;
+                    }
+                  csv << "," << row.value.at(q) << ",";
+                  if (row.reference.count(q))
+                    csv << error(row.value.at(q), row.reference.at(q));
+                  csv << "," << error(row.value.at(q), converged.at(q));
+                }
+              csv << "\n";
+            }
+
+          Json j = Json::object();
+          j["parameter file"]    = file;
+          j["reference variant"] = reference_variant;
+          j["accuracy"]          = accuracy;
+          Json &c                = j["converged model"];
+          for (const auto &q : quantities)
+            {
+              Json o      = Json::object();
+              o["value"]  = converged.at(q);
+              o["method"] = how.at(q);
+              if (order.count(q))
+                o["observed order in h"] = order.at(q);
+              c[q] = o;
+            }
+          Json &r = j["first run within the accuracy"];
+          std::cout << "\nConverged model (" << reference_variant << "):";
+          for (const auto &q : quantities)
+            std::cout << " " << q << " = " << std::setprecision(8) << converged.at(q)
+                      << " (" << how.at(q) << ")";
+          std::cout << "\nFirst run within " << accuracy
+                    << " of it for every quantity:\n";
+          for (const auto &variant : variants)
+            {
+              Json        o = Json::object();
+              const auto &x = reached[variant.name];
+              o["reached"]  = x.found;
+              std::cout << "  " << std::left << std::setw(28) << variant.name;
+              if (x.found)
+                {
+                  o["dofs"]      = x.dofs;
+                  o["wall time [s]"] = x.wall;
+                  if (!x.run.empty())
+                    o["run"] = x.run;
+                  if (x.cycle >= 0)
+                    o["cycle"] = x.cycle;
+                  std::cout << x.dofs << " DoFs, " << std::setprecision(3) << x.wall
+                            << " s";
+                }
+              else
+                std::cout << "not reached";
+              std::cout << "\n";
+              r[variant.name] = o;
+            }
+          {
+            std::ofstream json(directory + "/study.json");
+            j.write(json);
+            json << "\n";
+          }
+          std::cout << "Study: " << directory << "/study.csv, study.json" << std::endl;
+
+          const std::string script =
+            std::string(SIGNORINI_SOURCE_DIR) + "/scripts/plot_study.py";
+          // Debian's interpreter has Debian's python3-matplotlib.
+          const std::string python =
+            std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+          if (std::filesystem::exists(script) &&
+              std::system((python + " -c 'import matplotlib' > /dev/null 2>&1").c_str()) == 0)
+            {
+              const std::string command = python + " " + script + " " + directory;
+              if (std::system(command.c_str()) != 0)
+                std::cerr << "signorini: the plots failed: " << command << std::endl;
+            }
+          else
+            std::cout << "Plots: python3-matplotlib is not installed (apt-get "
+                         "install python3-matplotlib), then run python3 "
+                      << script << " " << directory << std::endl;
+        }
+      return all_converged ? 0 : 3;
+    }
+  } // namespace Study
+} // namespace Signorini
