@@ -420,7 +420,8 @@ namespace Signorini
           csv << "\n" << std::setprecision(10);
           for (const auto &row : rows)
             {
-              csv << row.variant << "," << row.run << "," << row.cycle << ","
+              // Names may hold commas: quoted, as CSV readers expect.
+              csv << '"' << row.variant << "\",\"" << row.run << "\"," << row.cycle << ","
                   << row.status << "," << row.cells << "," << row.dofs << ","
                   << row.contact_nodes << "," << row.iterations << "," << row.wall
                   << "," << row.memory_mb;
