@@ -61,8 +61,8 @@ namespace RunOutput
 
   /**
    * Every number of a summary.json with the key it stands under, in file
-   * order, except the wall times (the "wall time [s]" object), which
-   * differ from run to run by nature.
+   * order, except the wall times (the "wall time [s]" object) and the
+   * peak memory, which differ from run to run by nature.
    */
   inline std::vector<std::pair<std::string, double>>
   summary_numbers(const std::string &summary_file)
@@ -87,7 +87,8 @@ namespace RunOutput
         {
           char        *end   = nullptr;
           const double value = std::strtod(text.c_str() + i, &end);
-          numbers.emplace_back(key, value);
+          if (key != "peak memory MB")
+            numbers.emplace_back(key, value);
           i = end - text.c_str() - 1;
         }
     return numbers;
