@@ -136,6 +136,37 @@ namespace Signorini
 
   namespace Refinement
   {
+    namespace
+    {
+      /// The points of @p local of every rank, on every rank.
+      template <int dim>
+      std::vector<Point<dim>>
+      all_points(const MPI_Comm comm, const std::vector<Point<dim>> &local)
+      {
+        std::vector<Point<dim>> points;
+        for (const auto &part : Utilities::MPI::all_gather(comm, local))
+          points.insert(points.end(), part.begin(), part.end());
+        return points;
+      }
+
+      /// Whether a vertex of @p cell lies within @p radius of the nearest
+      /// point of @p tree.
+      template <class Cell, class Tree>
+      bool
+      near(const Cell &cell, const Tree &tree, const double radius)
+      {
+        for (const auto v : cell->vertex_indices())
+          {
+            std::vector<std::decay_t<decltype(cell->vertex(v))>> nearest;
+            tree.query(boost::geometry::index::nearest(cell->vertex(v), 1),
+                       std::back_inserter(nearest));
+            if (!nearest.empty() && nearest[0].distance(cell->vertex(v)) <= radius)
+              return true;
+          }
+        return false;
+      }
+    } // namespace
+
     template <int dim>
     void
     refine_contact_band(parallel::distributed::Triangulation<dim> &triangulation,
@@ -159,32 +190,16 @@ namespace Signorini
                       if (parameters.band_gap < 0. || gap(X) <= parameters.band_gap)
                         local.push_back(X);
                     }
-          std::vector<Point<dim>> zone;
-          for (const auto &part : Utilities::MPI::all_gather(comm, local))
-            zone.insert(zone.end(), part.begin(), part.end());
+          const std::vector<Point<dim>> zone = all_points(comm, local);
           if (zone.empty())
             return;
           const auto tree = pack_rtree(zone);
 
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned() &&
-                static_cast<unsigned int>(cell->level()) < parameters.max_level)
-              {
-                const double tolerance = 1e-10 * cell->diameter();
-                for (const auto v : cell->vertex_indices())
-                  {
-                    std::vector<Point<dim>> nearest;
-                    tree.query(boost::geometry::index::nearest(cell->vertex(v), 1),
-                               std::back_inserter(nearest));
-                    if (!nearest.empty() &&
-                        nearest[0].distance(cell->vertex(v)) <=
-                          parameters.band_width + tolerance)
-                      {
-                        cell->set_refine_flag();
-                        break;
-                      }
-                  }
-              }
+                static_cast<unsigned int>(cell->level()) < parameters.max_level &&
+                near(cell, tree, parameters.band_width + 1e-10 * cell->diameter()))
+              cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
         }
     }
@@ -265,9 +280,7 @@ namespace Signorini
             h = std::max(h, nodes.nodes()[k].h);
           }
       h = Utilities::MPI::max(h, comm);
-      std::vector<Point<dim>> points;
-      for (const auto &part : Utilities::MPI::all_gather(comm, local))
-        points.insert(points.end(), part.begin(), part.end());
+      const std::vector<Point<dim>> points = all_points(comm, local);
       Point<dim> lo = points[0], hi = points[0];
       for (const auto &p : points)
         for (unsigned int d = 0; d < dim; ++d)
@@ -279,18 +292,8 @@ namespace Signorini
       const double radius = depth * std::max(lo.distance(hi), h);
       const auto   tree   = pack_rtree(points);
       for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto v : cell->vertex_indices())
-            {
-              std::vector<Point<dim>> nearest;
-              tree.query(boost::geometry::index::nearest(cell->vertex(v), 1),
-                         std::back_inserter(nearest));
-              if (nearest[0].distance(cell->vertex(v)) <= radius)
-                {
-                  zone[cell->active_cell_index()] = true;
-                  break;
-                }
-            }
+        if (cell->is_locally_owned() && near(cell, tree, radius))
+          zone[cell->active_cell_index()] = true;
       return zone;
     }
 

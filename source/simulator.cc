@@ -743,9 +743,7 @@ namespace Signorini
         mu0 :
         std::max(mu0, last_mu / continuation_parameters.step_reduction);
     std::unique_ptr<Objective> objective;
-    Contact::PenaltyTerm<dim> *penalty_term =
-      contact ? static_cast<Contact::PenaltyTerm<dim> *>(contact.get()) :
-                static_cast<Contact::PenaltyTerm<dim> *>(two_body.get());
+    Contact::PenaltyTerm<dim> *const term = penalty_term();
     const typename Contact::PenaltyObjective<dim>::PatternBuilder rebuild =
       [this](const VectorType &u) {
         TimerOutput::Scope scope(*timer, "sparsity pattern");
@@ -759,7 +757,7 @@ namespace Signorini
     else
       {
         auto penalised = std::make_unique<Contact::PenaltyObjective<dim>>(
-          *energy, *penalty_term, time, mu_start, rebuild);
+          *energy, *term, time, mu_start, rebuild);
         penalised->timer = timer.get();
         objective        = std::move(penalised);
       }
@@ -785,7 +783,7 @@ namespace Signorini
     // Each stage of the continuation: Newton on G_mu, or Ipopt as an
     // unconstrained minimiser of G_mu (two-body contact, Method = ipopt).
     Contact::StageSolver solve_stage = [&](const double mu, VectorType &u) {
-      Contact::PenaltyObjective<dim> stage(*energy, *penalty_term, time, mu, rebuild);
+      Contact::PenaltyObjective<dim> stage(*energy, *term, time, mu, rebuild);
       stage.timer = timer.get();
       return newton.minimize(stage, homogeneous_constraints, u,
                              solution_ghosted, hessian, rhs);
@@ -812,7 +810,7 @@ namespace Signorini
       }
     const Contact::ContinuationResult result =
       Contact::penalty_continuation(continuation_parameters, solve_stage, *energy,
-                                    *penalty_term, time, mu_start,
+                                    *term, time, mu_start,
                                     homogeneous_constraints, solution,
                                     solution_ghosted, progress);
     stats            = result.last;
@@ -952,9 +950,7 @@ namespace Signorini
     const auto estimator = refinement_parameters.estimator;
     solution_ghosted = solution;
     // The nodal contact pressure behind the contact indicator and zone.
-    const Contact::PenaltyTerm<dim> *term =
-      contact ? static_cast<const Contact::PenaltyTerm<dim> *>(contact.get()) :
-                static_cast<const Contact::PenaltyTerm<dim> *>(two_body.get());
+    const Contact::PenaltyTerm<dim> *const term = penalty_term();
     std::vector<double> pressures;
     std::vector<bool>   zone;
     if (term)
@@ -1250,9 +1246,7 @@ namespace Signorini
         c[contact ? "foundation" : "target"] = report.foundation;
         c["nodes"]              = report.contact_nodes;
         c["hanging nodes"] =
-          (contact ? static_cast<const Contact::PenaltyTerm<dim> &>(*contact) :
-                     static_cast<const Contact::PenaltyTerm<dim> &>(*two_body))
-            .contact_nodes_on_boundary()
+          penalty_term()->contact_nodes_on_boundary()
             .n_hanging();
         c["mean mesh size"]     = contact ? contact->mean_mesh_size() :
                                             two_body->mean_mesh_size();

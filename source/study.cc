@@ -409,38 +409,40 @@ namespace Signorini
 
       if (root)
         {
-          std::ofstream csv(directory + "/study.csv");
-          csv << "variant,run,cycle,status,cells,dofs,contact_nodes,iterations,"
-                 "wall_time,peak_memory_mb";
-          for (const auto &p : phases)
-            csv << ",time_" << file_name(p);
-          for (const auto &q : quantities)
-            csv << "," << q << "," << q << "_error_analytic," << q
-                << "_error_converged";
-          csv << "\n" << std::setprecision(10);
-          for (const auto &row : rows)
-            {
-              // Names may hold commas: quoted, as CSV readers expect.
-              csv << '"' << row.variant << "\",\"" << row.run << "\"," << row.cycle << ","
-                  << row.status << "," << row.cells << "," << row.dofs << ","
-                  << row.contact_nodes << "," << row.iterations << "," << row.wall
-                  << "," << row.memory_mb;
-              for (const auto &p : phases)
-                csv << "," << (row.timing.count(p) ? row.timing.at(p) : 0.);
-              for (const auto &q : quantities)
-                {
-                  if (row.value.count(q) == 0)
-                    {
-                      csv << ",,,";
-                      continue;
-                    }
-                  csv << "," << row.value.at(q) << ",";
-                  if (row.reference.count(q))
-                    csv << error(row.value.at(q), row.reference.at(q));
-                  csv << "," << error(row.value.at(q), converged.at(q));
-                }
-              csv << "\n";
-            }
+          {
+            std::ofstream csv(directory + "/study.csv");
+            csv << "variant,run,cycle,status,cells,dofs,contact_nodes,iterations,"
+                   "wall_time,peak_memory_mb";
+            for (const auto &p : phases)
+              csv << ",time_" << file_name(p);
+            for (const auto &q : quantities)
+              csv << "," << q << "," << q << "_error_analytic," << q
+                  << "_error_converged";
+            csv << "\n" << std::setprecision(10);
+            for (const auto &row : rows)
+              {
+                // Names may hold commas: quoted, as CSV readers expect.
+                csv << '"' << row.variant << "\",\"" << row.run << "\"," << row.cycle << ","
+                    << row.status << "," << row.cells << "," << row.dofs << ","
+                    << row.contact_nodes << "," << row.iterations << "," << row.wall
+                    << "," << row.memory_mb;
+                for (const auto &p : phases)
+                  csv << "," << (row.timing.count(p) ? row.timing.at(p) : 0.);
+                for (const auto &q : quantities)
+                  {
+                    if (row.value.count(q) == 0)
+                      {
+                        csv << ",,,";
+                        continue;
+                      }
+                    csv << "," << row.value.at(q) << ",";
+                    if (row.reference.count(q))
+                      csv << error(row.value.at(q), row.reference.at(q));
+                    csv << "," << error(row.value.at(q), converged.at(q));
+                  }
+                csv << "\n";
+              }
+          } // closed: the plot script reads it
 
           Json j = Json::object();
           j["parameter file"]    = file;

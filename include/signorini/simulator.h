@@ -159,6 +159,15 @@ namespace Signorini
     boundary_constraints(const double time, const bool homogeneous) const;
     AffineConstraints<double>
     increment_constraints(const double time) const;
+    /// The contact model as a penalty term (rigid foundation or two
+    /// bodies), nullptr if the scene declares no contact.
+    Contact::PenaltyTerm<dim> *
+    penalty_term() const
+    {
+      if (contact)
+        return contact.get();
+      return two_body.get();
+    }
     /// The penalty's scale mu_0 from the current contact mesh size.
     void
     update_penalty_scale();
