@@ -810,7 +810,7 @@ namespace Signorini
       }
     const Contact::ContinuationResult result =
       Contact::penalty_continuation(continuation_parameters, solve_stage, *energy,
-                                    *term, time, mu_start,
+                                    *term, time, mu_start, mu0,
                                     homogeneous_constraints, solution,
                                     solution_ghosted, progress);
     stats            = result.last;
@@ -825,7 +825,16 @@ namespace Signorini
     if (!result.tolerance_met)
       {
         report.penetration_tolerance_met = false;
-        record.solver_status = "penetration tolerance not met";
+        std::ostringstream status;
+        if (result.capped)
+          status << "penetration tolerance not met: mu capped at "
+                 << result.stages.back().mu
+                 << " (Solver > Penalty > Maximum penalty ratio)";
+        else
+          status << "penetration tolerance not met in "
+                 << continuation_parameters.max_stages
+                 << " stages (Solver > Penalty > Maximum stages)";
+        record.solver_status = status.str();
       }
     return true;
   }
@@ -1311,6 +1320,8 @@ namespace Signorini
                 so["mu"]                = st.mu;
                 so[iterations]          = st.newton_iterations;
                 so["max penetration over h"] = st.penetration_ratio;
+                if (!st.converged)
+                  so["converged"] = false; // tried again with a smaller jump
                 stages.push_back(so);
               }
             o["penalty stages"] = stages;

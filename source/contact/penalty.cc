@@ -82,6 +82,32 @@ namespace Signorini
                         "Stages per load step; if the tolerance is still not "
                         "met the step is accepted with a warning, and "
                         "summary.json says so.");
+      prm.declare_entry("Maximum penalty ratio",
+                        "1e14",
+                        Patterns::Double(1.),
+                        "Largest mu / mu_0 [-]; >= 1. Beyond it the penalty "
+                        "Hessian drowns the elastic one in round-off. If "
+                        "the penetration tolerance is not met at this mu "
+                        "the step is accepted with a warning, and "
+                        "summary.json says so (solver status of the step, "
+                        "'penetration tolerance met' false).");
+      prm.declare_entry("Stage iteration target",
+                        "20",
+                        Patterns::Integer(1),
+                        "A stage that needs more solver iterations than "
+                        "this is hard: the logarithm of the next stage's "
+                        "largest jump in mu shrinks in proportion (target "
+                        "/ iterations). A stage that needs at most half "
+                        "lets the largest jump grow back (squared), up to "
+                        "'Maximum growth'.");
+      prm.declare_entry("Maximum stage retries",
+                        "3",
+                        Patterns::Integer(0, 20),
+                        "A stage (after the first of a load step) whose "
+                        "solver fails is tried again from the previous "
+                        "stage's solution with the square root of its "
+                        "jump in mu, at most this many times per load step; "
+                        "then the load step fails (and is cut).");
       prm.declare_entry("Restart each load step",
                         "false",
                         Patterns::Bool(),
@@ -111,6 +137,13 @@ namespace Signorini
       max_stages            = prm.get_integer("Maximum stages");
       restart_each_step     = prm.get_bool("Restart each load step");
       step_reduction        = prm.get_double("Load step reduction");
+      max_penalty_ratio     = prm.get_double("Maximum penalty ratio");
+      stage_iteration_target = prm.get_integer("Stage iteration target");
+      max_stage_retries      = prm.get_integer("Maximum stage retries");
+      if (!(max_penalty_ratio >= 1.) || !std::isfinite(max_penalty_ratio))
+        throw InputError("Solver > Penalty > Maximum penalty ratio",
+                         "must be a finite number >= 1, got " +
+                           prm.get("Maximum penalty ratio"));
       if (!(initial_factor > 0.))
         throw InputError("Solver > Penalty > Initial penalty factor",
                          "must be > 0, got " + prm.get("Initial penalty factor"));
@@ -132,76 +165,134 @@ namespace Signorini
                          PenaltyTerm<dim>                &contact,
                          const double                     time,
                          const double                     mu_start,
+                         const double                     mu_reference,
                          const AffineConstraints<double> &constraints,
                          VectorType                      &u,
                          VectorType                      &ghosted,
                          ConditionalOStream              &progress)
     {
       ContinuationResult result;
-      double             mu = mu_start;
-      // Stage solutions behave like u(mu) = u_inf + c mu^(-1/2) (the
-      // penetration of a node with a given force falls like mu^(-1/2)):
-      // from two stages, extrapolate the start of the next one.
-      VectorType previous(u);
-      double     previous_r = 0.;
-      for (unsigned int s = 0; s < parameters.max_stages; ++s)
+      const double       mu_cap = parameters.max_penalty_ratio * mu_reference;
+      double             mu     = std::min(mu_start, mu_cap);
+      double             max_jump = parameters.max_growth;
+      // The solutions of the last two converged stages: stage solutions
+      // behave like u(mu) = u_inf + c mu^(-1/2) (the penetration of a node
+      // with a given force falls like mu^(-1/2)), so two of them
+      // extrapolate the start of the next stage.
+      VectorType   last(u), before_last(u);
+      double       last_mu = 0., last_r = 0., before_last_r = 0.;
+      unsigned int n_converged = 0;
+      while (n_converged < parameters.max_stages)
         {
-          if (s >= 1)
+          if (n_converged >= 1)
             {
-              // u holds stage s-1's solution, previous stage s-2's.
-              const double last_r = 1. / std::sqrt(result.stages.back().mu);
-              VectorType   start(u);
-              if (s >= 2)
+              u = last;
+              if (n_converged >= 2)
                 {
                   const double factor =
-                    (1. / std::sqrt(mu) - last_r) / (last_r - previous_r);
-                  start.add(factor, u);
-                  start.add(-factor, previous);
+                    (1. / std::sqrt(mu) - last_r) / (last_r - before_last_r);
+                  VectorType start(last);
+                  start.add(factor, last);
+                  start.add(-factor, before_last);
                   ghosted = start;
                   PenaltyObjective<dim> check(energy, contact, time, mu);
-                  if (!check.evaluate(ghosted, constraints, nullptr, nullptr)
-                         .admissible)
-                    start = u;
+                  if (check.evaluate(ghosted, constraints, nullptr, nullptr)
+                        .admissible)
+                    u = start;
                 }
-              previous   = u;
-              previous_r = last_r;
-              u          = start;
             }
-          progress << "  stage " << s + 1 << ": mu = " << std::scientific
-                   << std::setprecision(3) << mu << std::defaultfloat
-                   << std::endl;
+          progress << "  stage " << result.stages.size() + 1
+                   << ": mu = " << std::scientific << std::setprecision(3)
+                   << mu << std::defaultfloat << std::endl;
           result.last = solve_stage(mu, u);
           result.newton_iterations += result.last.iterations;
+          if (!result.last.converged)
+            {
+              result.stages.push_back({mu, result.last.iterations, 0., false});
+              const double jump = n_converged >= 1 ? mu / last_mu : 1.;
+              if (n_converged >= 1 &&
+                  result.retries < parameters.max_stage_retries &&
+                  jump > 1. + 1e-3)
+                {
+                  // Go back to the last converged stage, half the jump in
+                  // log mu, and limit the jumps that follow to it.
+                  ++result.retries;
+                  max_jump = std::sqrt(jump);
+                  mu       = last_mu * max_jump;
+                  progress << "    stage failed (" << result.last.reason
+                           << "); again with a jump of " << std::setprecision(3)
+                           << max_jump << " in mu" << std::endl;
+                  continue;
+                }
+              std::ostringstream msg;
+              msg << "penalty stage " << result.stages.size() << " (mu = " << mu
+                  << "): " << result.last.reason;
+              if (result.retries > 0)
+                msg << " (after " << result.retries
+                    << " retries with smaller jumps in mu)";
+              result.reason = msg.str();
+              return result;
+            }
           ghosted = u;
           contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
                               &result.forces);
           const auto summary = contact.measure(ghosted, result.forces);
           result.stages.push_back(
-            {mu, result.last.iterations, summary.max_penetration_ratio});
+            {mu, result.last.iterations, summary.max_penetration_ratio, true});
           progress << "    penetration / h = " << std::scientific
                    << std::setprecision(3) << summary.max_penetration_ratio
                    << std::defaultfloat << ", " << summary.n_active
                    << " active node(s)" << std::endl;
-          if (!result.last.converged)
+          // How hard was this stage? (The first stage of a load step also
+          // carries the load increment: it does not say how hard a jump in
+          // mu is.)
+          if (n_converged >= 1)
             {
-              std::ostringstream msg;
-              msg << "penalty stage " << s + 1 << " (mu = " << mu
-                  << "): " << result.last.reason;
-              result.reason = msg.str();
-              return result;
+              const double jump = mu / last_mu;
+              const double n    = result.last.iterations;
+              const double target = parameters.stage_iteration_target;
+              if (n > target)
+                max_jump = std::min(
+                  max_jump,
+                  std::max(std::min(parameters.min_growth, max_jump),
+                           std::pow(jump, target / n)));
+              else if (2. * n <= target)
+                max_jump = std::min(parameters.max_growth, max_jump * max_jump);
             }
+          before_last   = last;
+          before_last_r = last_r;
+          last          = u;
+          last_mu       = mu;
+          last_r        = 1. / std::sqrt(mu);
+          ++n_converged;
           if (summary.max_penetration_ratio <= parameters.penetration_tolerance)
             {
               result.converged     = true;
               result.tolerance_met = true;
               return result;
             }
+          if (mu >= mu_cap * (1. - 1e-12))
+            {
+              result.converged = true;
+              result.capped    = true;
+              progress << "  warning: the penalty reached its cap mu = "
+                       << std::scientific << std::setprecision(3) << mu
+                       << " (Maximum penalty ratio " << parameters.max_penalty_ratio
+                       << " x mu_0) with penetration / h = "
+                       << summary.max_penetration_ratio << " > "
+                       << parameters.penetration_tolerance << std::defaultfloat
+                       << "; the step is accepted" << std::endl;
+              return result;
+            }
           const double predicted =
             std::pow(summary.max_penetration_ratio /
                        (parameters.target_fraction * parameters.penetration_tolerance),
                      2.);
-          mu *= std::max(parameters.min_growth,
-                         std::min(parameters.max_growth, predicted));
+          // After a failed stage max_jump may lie below Minimum growth:
+          // the failure wins.
+          mu = std::min(mu_cap,
+                        mu * std::max(std::min(parameters.min_growth, max_jump),
+                                      std::min(max_jump, predicted)));
         }
       result.converged = true;
       progress << "  warning: the penetration tolerance was not met in "
@@ -214,13 +305,13 @@ namespace Signorini
     template ContinuationResult
     penalty_continuation<2>(const ContinuationParameters &, const StageSolver &,
                             const EnergyFunctional<2> &, PenaltyTerm<2> &,
-                            const double, const double,
+                            const double, const double, const double,
                             const AffineConstraints<double> &, VectorType &,
                             VectorType &, ConditionalOStream &);
     template ContinuationResult
     penalty_continuation<3>(const ContinuationParameters &, const StageSolver &,
                             const EnergyFunctional<3> &, PenaltyTerm<3> &,
-                            const double, const double,
+                            const double, const double, const double,
                             const AffineConstraints<double> &, VectorType &,
                             VectorType &, ConditionalOStream &);
   } // namespace Contact

@@ -190,6 +190,9 @@ namespace Signorini
       unsigned int max_stages            = 20;
       bool         restart_each_step     = false;
       double       step_reduction        = 1e4;
+      double       max_penalty_ratio     = 1e14; // cap of mu / mu_0
+      unsigned int stage_iteration_target = 20;
+      unsigned int max_stage_retries      = 3;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -202,12 +205,17 @@ namespace Signorini
       double       mu                = 0.;
       unsigned int newton_iterations = 0;
       double       penetration_ratio = 0.;
+      // false: the stage's solver failed and the stage was tried again
+      // from the previous stage's solution with a smaller jump in mu.
+      bool converged = true;
     };
 
     struct ContinuationResult
     {
       bool               converged     = false; // every stage converged
       bool               tolerance_met = false; // penetration below tolerance
+      bool               capped        = false; // stopped at the largest mu
+      unsigned int       retries       = 0;     // failed stages tried again
       std::vector<Stage> stages;
       unsigned int       newton_iterations = 0;
       NewtonMinimizer::Statistics last;
@@ -227,6 +235,20 @@ namespace Signorini
     /**
      * Run the continuation for one load step at @p time from @p u, the
      * first stage with @p mu_start, each stage solved by @p solve_stage.
+     * @p mu_reference is the scene's mu_0: no stage goes beyond
+     * 'Maximum penalty ratio' times it.
+     *
+     * The jump from one stage to the next is predicted from the measured
+     * penetration and clamped to [Minimum growth, g_max]. g_max starts at
+     * 'Maximum growth' and follows how hard the stages are: a stage that
+     * needs more than 'Stage iteration target' iterations shrinks the
+     * logarithm of the next jump in proportion (g_max = g^(target / n)); an
+     * easy one (at most half the target) lets it grow back (g_max^2). A
+     * stage whose solver fails is tried again from the previous stage's
+     * solution with the square root of the jump, up to 'Maximum stage
+     * retries' times; only a failed first stage (nothing to go back to) or
+     * too many retries fail the load step.
+     *
      * On return @p u holds the last converged stage (or the last iterate
      * if a stage failed). @p ghosted is a ghosted work vector.
      */
@@ -238,6 +260,7 @@ namespace Signorini
                          PenaltyTerm<dim>                &contact,
                          const double                     time,
                          const double                     mu_start,
+                         const double                     mu_reference,
                          const AffineConstraints<double> &constraints,
                          VectorType                      &u,
                          VectorType                      &ghosted,
