@@ -9,11 +9,16 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <iomanip>
+#include <limits>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace Signorini
@@ -21,6 +26,94 @@ namespace Signorini
 
   namespace
   {
+    // A coarse mesh lives on every rank (p4est): beyond this it is a
+    // typing error, not a scene.
+    constexpr double max_coarse_cells = 1e7;
+
+    std::string
+    format_count(const double n)
+    {
+      std::ostringstream s;
+      s << std::setprecision(3) << n;
+      return s.str();
+    }
+
+    /**
+     * Throw an InputError when refining @p coarse_cells cells @p global
+     * times would need more memory than this machine (or, on several
+     * ranks, the nodes they run on) has. The estimate is a low bound (the
+     * mesh, DoF handler, vectors and the Q1 Hessian take about 2 kB per 2D
+     * cell and 10 kB per 3D cell), so that only scenes that cannot run
+     * are refused, and before any allocation fails.
+     */
+    void
+    check_refined_size(const double coarse_cells, const unsigned int dim,
+                       const unsigned int global, const MPI_Comm comm)
+    {
+      const double cells = coarse_cells * std::pow(2., double(dim * global));
+      const double bytes = cells * (dim == 2 ? 2e3 : 1e4);
+      double       memory = 0.; // bytes of this node
+      std::ifstream meminfo("/proc/meminfo");
+      for (std::string key; meminfo >> key;)
+        {
+          double kb = 0.;
+          meminfo >> kb;
+          if (key == "MemTotal:")
+            memory = kb * 1024.;
+          meminfo.ignore(256, '\n');
+        }
+      if (!(memory > 0.))
+        return;
+      const double cores = std::max(1u, std::thread::hardware_concurrency());
+      const double nodes =
+        std::max(1., Utilities::MPI::n_mpi_processes(comm) / cores);
+      if (bytes > memory * nodes || cells > 4e9)
+        throw InputError("Mesh > Global refinements",
+                         std::to_string(global) + " refinements of " +
+                           format_count(coarse_cells) + " coarse cells make " +
+                           format_count(cells) + " cells, which need at least " +
+                           format_count(bytes / 1e9) + " GB; this machine has " +
+                           format_count(memory * nodes / 1e9) + " GB");
+    }
+    /**
+     * GridIn accepts a cell that names one vertex twice, or whose corners
+     * coincide: the solve then fails far from the cause. Refuse them with
+     * the cell's number (cells counted from 1 in the order of the file's
+     * elements of the mesh's dimension) and its vertices.
+     */
+    template <int dim>
+    void
+    check_cells(const Triangulation<dim> &tria, const std::string &file)
+    {
+      const double size = GridTools::diameter(tria);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          std::vector<unsigned int> indices;
+          for (const auto v : cell->vertex_indices())
+            indices.push_back(cell->vertex_index(v));
+          std::vector<unsigned int> sorted(indices);
+          std::sort(sorted.begin(), sorted.end());
+          const bool repeated =
+            std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+          double shortest = std::numeric_limits<double>::max();
+          for (const auto v : cell->vertex_indices())
+            for (unsigned int w = v + 1; w < cell->n_vertices(); ++w)
+              shortest = std::min(shortest, cell->vertex(v).distance(cell->vertex(w)));
+          if (repeated || !(shortest > 1e-12 * size) ||
+              !(std::abs(cell->measure()) > 0.))
+            {
+              std::ostringstream msg;
+              msg << "cell " << cell->index() + 1 << " is degenerate ("
+                  << (repeated ? "it names a vertex twice" :
+                                 "two of its corners coincide")
+                  << "); its vertices:";
+              for (const auto v : cell->vertex_indices())
+                msg << " (" << cell->vertex(v) << ")";
+              throw InputError(file, msg.str());
+            }
+        }
+    }
+
     /**
      * The parts of an ASCII Gmsh file that GridIn::read_msh trusts without
      * checking: the $MeshFormat line, and the count lines after $Nodes and
@@ -164,6 +257,18 @@ namespace Signorini
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
 
+    {
+      double coarse_cells = 1.;
+      for (const unsigned int n : subdivisions)
+        coarse_cells *= n;
+      if (coarse_cells > max_coarse_cells)
+        throw InputError(context + " > Subdivisions",
+                         "'" + prm.get("Subdivisions") + "' makes " +
+                           format_count(coarse_cells) +
+                           " coarse cells; at most " +
+                           format_count(max_coarse_cells) +
+                           " (refine with Mesh > Global refinements instead)");
+    }
     if (shape == Shape::rectangle || shape == Shape::die)
       for (unsigned int d = 0; d < dim; ++d)
         if (!(upper_corner[d] > lower_corner[d]))
@@ -498,6 +603,7 @@ namespace Signorini
           }
         if (serial.n_active_cells() == 0)
           throw InputError(mesh.gmsh_file, "the mesh has no cells");
+        check_cells(serial, mesh.gmsh_file);
         tria.copy_triangulation(serial);
       }
     else
@@ -521,6 +627,8 @@ namespace Signorini
       else
         tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
 
+    check_refined_size(tria.n_global_active_cells(), dim,
+                       mesh.global_refinements, tria.get_communicator());
     tria.refine_global(mesh.global_refinements);
 
     if (mesh.local_refinements > 0)

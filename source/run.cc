@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <new>
 #include <iostream>
 #include <regex>
 #include <vector>
@@ -192,6 +193,16 @@ namespace Signorini
       {
         if (root)
           std::cerr << "signorini: error: " << e.what() << std::endl;
+        return input_error;
+      }
+    catch (const std::bad_alloc &)
+      {
+        if (root)
+          std::cerr << "signorini: error: " << file
+                    << ": out of memory: the scene needs more memory than "
+                       "this machine has (reduce Mesh > Global refinements, "
+                       "Local refinements or a body's Subdivisions)"
+                    << std::endl;
         return input_error;
       }
     catch (const std::exception &e)
