@@ -15,7 +15,9 @@
 // - 3D, hanging nodes on the contact boundary (a block pressed on a plane,
 //   Kelly's estimator, the contact zone not kept uniform): the pressure is
 //   the applied 0.876 at every contact node to 1e-6 and the weights add up
-//   to the bottom's area, which needs the hanging nodes' shares.
+//   to the bottom's area, which needs the hanging nodes' shares;
+// - the initial band refinement of the potential contact zone refines the
+//   arc only where its gap to the plane is small.
 
 #include "run_output.h"
 
@@ -149,4 +151,30 @@ main()
       << verdict(!bottom.empty() && worst < 1e-6 * 0.876) << "\n";
   std::cerr << "3D: " << hanging << " hanging nodes, area " << area
             << ", largest pressure error " << worst << "\n";
+
+  // The initial band refinement of the potential contact zone: two levels
+  // for the arc points whose initial gap to the plane is at most 0.05
+  // (|x| <= 0.31) and the cells that touch them. The arc's nodes there
+  // are 4 times closer than beyond x = 0.5, where the mesh is untouched.
+  const std::string band = "subsection Mesh refinement\n  set Number of cycles = 0\n"
+                           "  set Contact band refinements = 2\n"
+                           "  set Contact band gap = 0.05\nend\n"
+                           // 5 nodes in contact: too few for Hertz's p0 to 2%.
+                           "subsection Contact\n  subsection Hertz reference\n"
+                           "    set Tolerance p0 = 0\n  end\nend\n";
+  const bool ran_band = RunOutput::run_scene("band", "hertz_adaptive.prm", band) == 0;
+  const auto arc      = read_csv("band/contact_profile.csv");
+  double     near = 0., far = 0.;
+  unsigned int n_near = 0, n_far = 0;
+  for (const auto &row : arc)
+    if (row.at("Xx") < 0.25)
+      near += row.at("weight"), ++n_near;
+    else if (row.at("Xx") > 0.5)
+      far += row.at("weight"), ++n_far;
+  const double ratio = (n_near && n_far) ? (far / n_far) / (near / n_near) : 0.;
+  out << "band: run converged: " << verdict(ran_band) << "\n"
+      << "band: node spacing 4x finer inside the band than beyond it: "
+      << verdict(std::abs(ratio - 4.) < 0.2) << "\n";
+  std::cerr << "band: " << n_near << " nodes with x < 0.25, " << n_far
+            << " with x > 0.5, spacing ratio " << ratio << "\n";
 }
