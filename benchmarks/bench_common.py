@@ -373,6 +373,10 @@ def machine_info():
 
 
 def git_revision():
+    # A benchmark may run a frozen copy of the binary while the tree moves
+    # on: SIGNORINI_BINARY_COMMIT then names the commit it was built from.
+    if os.environ.get("SIGNORINI_BINARY_COMMIT"):
+        return os.environ["SIGNORINI_BINARY_COMMIT"]
     try:
         rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                              capture_output=True, text=True).stdout.strip()

@@ -210,8 +210,10 @@ def level_series(runner, args, key, levels=None, solver=None, extra=None, plan=N
                       overrides_for(spec, level, solver, extra))
         row["level"] = level
         rows.append(row)
-        if row.get("timed_out"):
-            break  # larger runs would time out too
+        if row.get("timed_out") or not row.get("summary"):
+            # Larger runs would time out or fail too (and a failed run
+            # gives no size to predict the next one from).
+            break
     return rows
 
 
@@ -466,7 +468,9 @@ def series_d(runner, args, plan=None):
     for level, amg, direct in reversed(pairs):
         fa, fd = run_facts(amg), run_facts(direct)
         ta, td = fa["timing"].get("total"), fd["timing"].get("total")
-        if ta and td and ta < td:
+        if not (ta and td):
+            continue  # a size with one of the two runs missing
+        if ta < td:
             crossover = fa["dofs"]
         else:
             break
