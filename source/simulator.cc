@@ -1279,7 +1279,8 @@ namespace Signorini
             b["pairs in the sparsity pattern"] = ps.pattern_pairs;
             b["sparsity pattern builds"] = ps.pattern_builds;
           }
-        if (method == "newton-penalty")
+        // Penalty continuation: Newton's, or Ipopt's for two bodies.
+        if (method == "newton-penalty" || two_body)
           {
             c["initial penalty"]           = report.initial_penalty;
             c["final penalty"]             = last_mu;
