@@ -10,6 +10,9 @@ Reads STUDY_DIR/study.csv and study.json and writes, per quantity:
 - error_vs_dofs.png: the same error versus DoFs, with each variant's
   observed rate (slope over its last three points) in the legend.
 The accuracy the study asked for is drawn as a horizontal line.
+Also writes study_tables.md: the converged model, the first run of each
+variant within the accuracy, and every run (the tables of
+doc/accuracy-cost.md).
 """
 import csv
 import json
@@ -67,11 +70,56 @@ def rate(points):
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
 
 
+def number(text, spec):
+    try:
+        return format(float(text), spec)
+    except (TypeError, ValueError):
+        return "–"
+
+
+def write_tables(directory, rows, meta):
+    quantities = list(meta["converged model"].keys())
+    lines = [f"Study `{meta.get('parameter file', '')}`; reference variant "
+             f"'{meta.get('reference variant', '')}'; accuracy {meta['accuracy']:g}.",
+             "", "| quantity | converged model | obtained by |", "|---|---|---|"]
+    for q, m in meta["converged model"].items():
+        lines.append(f"| {q} | {m['value']:.8g} | {m.get('method', '')} |")
+    lines += ["", f"First run within {meta['accuracy']:g} of the converged model "
+              "for every quantity:", "",
+              "| variant | run / cycle | DoFs | wall time [s] |", "|---|---|---|---|"]
+    for variant, first in meta["first run within the accuracy"].items():
+        if first.get("reached"):
+            where = first.get("run", first.get("cycle", ""))
+            lines.append(f"| {variant} | {where} | {first['dofs']} | "
+                         f"{first['wall time [s]']:.3g} |")
+        else:
+            lines.append(f"| {variant} | not reached | | |")
+    header = ["variant", "run / cycle", "DoFs", "iterations", "wall [s]", "peak MB"]
+    for q in quantities:
+        header += [q, f"{q} error"]
+    lines += ["", "Every run and refinement cycle (`study.csv`; wall time since "
+              "the start of the run, iterations summed over its cycles so far; "
+              "errors against the converged model):", "",
+              "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for r in rows:
+        where = r["cycle"] if r.get("cycle") not in (None, "", "-1") else r["run"]
+        cells = [r["variant"], where, r["dofs"], r["iterations"],
+                 number(r["wall_time"], ".3g"), number(r["peak_memory_mb"], ".0f")]
+        for q in quantities:
+            cells += [number(r.get(q), ".7g"), number(r.get(q + "_error_converged"), ".1e")]
+        lines.append("| " + " | ".join(cells) + " |")
+    path = os.path.join(directory, "study_tables.md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("Tables:", path)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     directory = sys.argv[1]
     rows, meta = read(directory)
+    write_tables(directory, rows, meta)
     quantities = list(meta["converged model"].keys())
     accuracy = meta["accuracy"]
     n = len(quantities)
