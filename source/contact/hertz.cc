@@ -3,6 +3,7 @@
 
 #include <deal.II/base/numbers.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -108,7 +109,7 @@ namespace Signorini
     HertzReference::quantities(
       const std::vector<std::pair<double, double>> &samples) const
     {
-      std::vector<Quantity> q(4);
+      std::vector<Quantity> q(5);
       q[0].name          = "hertz_a";
       q[0].has_reference = true;
       q[0].reference     = half_width();
@@ -122,8 +123,28 @@ namespace Signorini
       q[2].name          = "contact_nodes_inside_a";
       q[3].name          = p0_from_fit ? "hertz_p0_axis_node" : "hertz_p0_fit";
       q[3].value         = std::numeric_limits<double>::quiet_NaN();
+      q[4].name          = "hertz_pressure_l2_error";
+      q[4].value         = std::numeric_limits<double>::quiet_NaN();
       if (samples.empty())
         return q;
+
+      {
+        std::vector<std::pair<double, double>> sorted(samples);
+        std::sort(sorted.begin(), sorted.end());
+        double error2 = 0., norm2 = 0.;
+        for (std::size_t i = 0; i + 1 < sorted.size(); ++i)
+          {
+            const double dx = sorted[i + 1].first - sorted[i].first;
+            const double e0 = sorted[i].second - pressure(sorted[i].first);
+            const double e1 = sorted[i + 1].second - pressure(sorted[i + 1].first);
+            const double p0 = pressure(sorted[i].first);
+            const double p1 = pressure(sorted[i + 1].first);
+            error2 += 0.5 * dx * (e0 * e0 + e1 * e1);
+            norm2 += 0.5 * dx * (p0 * p0 + p1 * p1);
+          }
+        if (norm2 > 0.)
+          q[4].value = std::sqrt(error2 / norm2);
+      }
 
       double p_max = 0., nearest = std::numeric_limits<double>::max();
       for (const auto &s : samples)

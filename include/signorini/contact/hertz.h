@@ -55,8 +55,12 @@ namespace Signorini
       parse_parameters(ParameterHandler &prm);
 
       /**
-       * Quantities hertz_a, hertz_p0 and contact_nodes_inside_a from
-       * (position x, pressure) samples of the nodes in contact.
+       * Quantities hertz_a, hertz_p0, contact_nodes_inside_a, the other p0
+       * (fit or axis node) and hertz_pressure_l2_error from (position x,
+       * pressure) samples of the contact boundary's nodes. The last is
+       * the relative L2 error of the sampled profile against Hertz's
+       * p(x), by the trapezoidal rule over the samples sorted by x:
+       * sqrt(int (p_h - p)^2 dx / int p^2 dx).
        */
       std::vector<Quantity>
       quantities(const std::vector<std::pair<double, double>> &samples) const;
