@@ -94,9 +94,11 @@ def write_tables(directory, rows, meta):
                          f"{first['wall time [s]']:.3g} |")
         else:
             lines.append(f"| {variant} | not reached | | |")
+    reported = meta.get("reported quantities", [])
     header = ["variant", "run / cycle", "DoFs", "iterations", "wall [s]", "peak MB"]
     for q in quantities:
         header += [q, f"{q} error"]
+    header += reported
     lines += ["", "Every run and refinement cycle (`study.csv`; wall time since "
               "the start of the run, iterations summed over its cycles so far; "
               "errors against the converged model):", "",
@@ -107,6 +109,7 @@ def write_tables(directory, rows, meta):
                  number(r["wall_time"], ".3g"), number(r["peak_memory_mb"], ".0f")]
         for q in quantities:
             cells += [number(r.get(q), ".7g"), number(r.get(q + "_error_converged"), ".1e")]
+        cells += [number(r.get(q), ".3g") for q in reported]
         lines.append("| " + " | ".join(cells) + " |")
     path = os.path.join(directory, "study_tables.md")
     with open(path, "w") as f:

@@ -148,6 +148,13 @@ namespace Signorini
                         "The quantities of the scene (names in summary.json) "
                         "whose errors the study reports, e.g. hertz_a, "
                         "hertz_p0. Only read by signorini --study.");
+      prm.declare_entry("Reported quantities",
+                        "",
+                        Patterns::List(Patterns::Anything()),
+                        "Further quantities written to study.csv and the "
+                        "tables as they are, outside the accuracy check: "
+                        "e.g. hertz_pressure_l2_error, itself the error of "
+                        "the pressure profile against Hertz's.");
       prm.declare_entry("Reference variant",
                         "",
                         Patterns::Anything(),
@@ -198,13 +205,14 @@ namespace Signorini
     run(const std::string &file, ParameterHandler &prm, MPI_Comm comm)
     {
       const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-      std::vector<std::string> quantities;
+      std::vector<std::string> quantities, reported;
       std::string              reference_variant;
       double                   accuracy;
       bool                     write_fields;
       std::vector<Variant>     variants;
       prm.enter_subsection("Study");
       quantities        = Utilities::split_string_list(prm.get("Quantities"));
+      reported          = Utilities::split_string_list(prm.get("Reported quantities"));
       reference_variant = Utilities::trim(prm.get("Reference variant"));
       accuracy          = prm.get_double("Accuracy");
       write_fields      = prm.get_bool("Write fields");
@@ -423,6 +431,8 @@ namespace Signorini
             for (const auto &q : quantities)
               csv << "," << q << "," << q << "_error_analytic," << q
                   << "_error_converged";
+            for (const auto &q : reported)
+              csv << "," << q;
             csv << "\n" << std::setprecision(10);
             for (const auto &row : rows)
               {
@@ -445,6 +455,12 @@ namespace Signorini
                       csv << error(row.value.at(q), row.reference.at(q));
                     csv << "," << error(row.value.at(q), converged.at(q));
                   }
+                for (const auto &q : reported)
+                  {
+                    csv << ",";
+                    if (row.value.count(q) && std::isfinite(row.value.at(q)))
+                      csv << row.value.at(q);
+                  }
                 csv << "\n";
               }
           } // closed: the plot script reads it
@@ -453,6 +469,13 @@ namespace Signorini
           j["parameter file"]    = file;
           j["reference variant"] = reference_variant;
           j["accuracy"]          = accuracy;
+          if (!reported.empty())
+            {
+              Json list = Json::array();
+              for (const auto &q : reported)
+                list.push_back(Json(q));
+              j["reported quantities"] = list;
+            }
           Json &c                = j["converged model"];
           for (const auto &q : quantities)
             {

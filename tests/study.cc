@@ -6,6 +6,8 @@
 //   three uniform runs, recomputed here from their rows, and every row's
 //   error against it is |value - converged| / |converged|;
 // - the analytic error is measured against Hertz's p0 = 10.98917;
+// - a reported quantity (the L2 error of the pressure profile) is written
+//   to every row as the run's summary.json has it;
 // - a Settings entry the scene does not have is a clear input error (exit 2)
 //   naming the variant.
 
@@ -30,6 +32,7 @@ namespace
       << "set Output directory = " << file.substr(0, file.size() - 4) << "\n"
       << "subsection Study\n"
       << "  set Quantities = hertz_a, hertz_p0\n"
+      << "  set Reported quantities = hertz_pressure_l2_error\n"
       << "  set Reference variant = uniform\n"
       << "  subsection Variant 1\n"
       << "    set Name = uniform\n"
@@ -82,6 +85,17 @@ main()
         }
       out << "errors against the Richardson value and against Hertz: "
           << verdict(errors) << "\n";
+      // A reported quantity: the run's own value, in every row.
+      const double l2 = RunOutput::summary_quantity("small/study/uniform-4/summary.json",
+                                                    "hertz_pressure_l2_error");
+      const std::string key = "hertz_pressure_l2_error";
+      bool reported = rows[2].count(key) && std::abs(rows[2].at(key) / l2 - 1.) < 1e-8;
+      // Every row but the coarsest (one node in contact: no profile).
+      for (std::size_t i = 1; i < rows.size(); ++i)
+        reported &= rows[i].count(key) && rows[i].at(key) > 0. && rows[i].at(key) < 1.;
+      out << "reported quantity (pressure profile L2 error) in the rows, as in "
+             "summary.json: "
+          << verdict(reported) << "\n";
     }
 
   write_study("bad.prm", "Mesh refinement/Number of cycle = 3");
