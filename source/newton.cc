@@ -124,7 +124,11 @@ namespace Signorini
       statistics.linear_iterations += info.iterations;
       statistics.linear_fallbacks += info.used_fallback;
       if (!ok)
-        return false;
+        {
+          ++statistics.linear_failures;
+          statistics.linear_message = message;
+          return false;
+        }
       constraints.distribute(d);
       // A direction that moves a DoF by more than 1000 scene sizes comes
       // from a (nearly) singular Hessian, e.g. a body held only by contact
@@ -264,6 +268,12 @@ namespace Signorini
             std::ostringstream msg;
             msg << "no convergence in " << it << " Newton iterations (|g| = "
                 << residual << ", tolerance " << tolerance << ")";
+            // A linear solver that fails (e.g. CG without the fallback to
+            // the direct solver) is the likely cause: say so.
+            if (statistics.linear_failures > 0)
+              msg << "; " << statistics.linear_failures
+                  << " linear solve(s) failed, the last: "
+                  << statistics.linear_message;
             statistics.reason = msg.str();
             return statistics;
           }
@@ -274,6 +284,10 @@ namespace Signorini
                                statistics))
           {
             statistics.reason = "no descent direction found";
+            if (statistics.linear_failures > 0)
+              statistics.reason += "; " + std::to_string(statistics.linear_failures) +
+                                   " linear solve(s) failed, the last: " +
+                                   statistics.linear_message;
             return statistics;
           }
 

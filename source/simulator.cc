@@ -815,6 +815,8 @@ namespace Signorini
                                     solution_ghosted, progress);
     stats            = result.last;
     stats.iterations = result.newton_iterations;
+    stats.linear_iterations = result.linear_iterations; // over all stages
+    stats.linear_fallbacks  = result.linear_fallbacks;
     stats.converged  = result.converged;
     stats.reason     = result.reason;
     record.stages    = result.stages;
@@ -922,6 +924,7 @@ namespace Signorini
     record.backtracks        = stats.backtracks;
     record.regularized       = stats.regularized_steps;
     record.linear_iterations = stats.linear_iterations;
+    record.linear_fallbacks  = stats.linear_fallbacks;
     record.residual          = stats.residual;
     record.energy            = stats.evaluation.value;
     record.min_J             = stats.evaluation.min_J;
@@ -1306,6 +1309,7 @@ namespace Signorini
         o["backtracks"]        = s.backtracks;
         o["regularized steps"] = s.regularized;
         o["linear iterations"] = s.linear_iterations;
+        o["linear fallbacks"]  = s.linear_fallbacks;
         o["cuts before"]       = s.cuts_before;
         o["residual"]          = s.residual;
         o["energy"]            = s.energy;
@@ -1422,7 +1426,7 @@ namespace Signorini
     std::ofstream csv(output_directory + "/load_steps.csv");
     csv << "step,time," << (method == "ipopt" ? "ipopt" : "newton")
         << "_iterations,backtracks,regularized_steps,"
-           "linear_iterations,cuts_before,residual,energy,min_J,"
+           "linear_iterations,linear_fallbacks,cuts_before,residual,energy,min_J,"
            "penalty_stages,final_penalty,active_contact_nodes,"
            "max_penetration_over_h,contact_force";
     for (unsigned int d = 0; d < dim; ++d)
@@ -1434,7 +1438,8 @@ namespace Signorini
         const auto &s = report.steps[i];
         csv << i + 1 << "," << s.time << "," << s.newton_iterations << ","
             << s.backtracks << "," << s.regularized << ","
-            << s.linear_iterations << "," << s.cuts_before << ","
+            << s.linear_iterations << "," << s.linear_fallbacks << ","
+            << s.cuts_before << ","
             << s.residual << "," << s.energy << "," << s.min_J << ","
             << s.stages.size() << ","
             << (s.stages.empty() ? 0. : s.stages.back().mu) << ","

@@ -109,6 +109,8 @@ namespace Signorini
       unsigned int convexified_steps    = 0; // projected contact Hessian used
       unsigned int linear_iterations    = 0;
       unsigned int linear_fallbacks     = 0;
+      unsigned int linear_failures      = 0; // solves that gave no direction
+      std::string  linear_message;            // why the last one failed
       double       residual             = 0.;
       double       force_scale          = 0.;
       Evaluation   evaluation;

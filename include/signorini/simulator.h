@@ -51,6 +51,7 @@ namespace Signorini
       unsigned int backtracks;
       unsigned int regularized;
       unsigned int linear_iterations;
+      unsigned int linear_fallbacks = 0; // iterative solves redone directly
       unsigned int cuts_before;
       double       residual;
       double       energy;

@@ -206,6 +206,8 @@ namespace Signorini
                    << mu << std::defaultfloat << std::endl;
           result.last = solve_stage(mu, u);
           result.newton_iterations += result.last.iterations;
+          result.linear_iterations += result.last.linear_iterations;
+          result.linear_fallbacks += result.last.linear_fallbacks;
           if (!result.last.converged)
             {
               result.stages.push_back({mu, result.last.iterations, 0., false});

@@ -216,6 +216,8 @@ namespace Signorini
       bool               tolerance_met = false; // penetration below tolerance
       bool               capped        = false; // stopped at the largest mu
       unsigned int       retries       = 0;     // failed stages tried again
+      unsigned int       linear_iterations = 0; // over all stages
+      unsigned int       linear_fallbacks  = 0; // over all stages
       std::vector<Stage> stages;
       unsigned int       newton_iterations = 0;
       NewtonMinimizer::Statistics last;
