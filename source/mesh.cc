@@ -14,9 +14,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -75,6 +75,7 @@ namespace Signorini
                            format_count(bytes / 1e9) + " GB; this machine has " +
                            format_count(memory * nodes / 1e9) + " GB");
     }
+
     /**
      * GridIn accepts a cell that names one vertex twice, or whose corners
      * coincide: the solve then fails far from the cause. Refuse them with
@@ -88,10 +89,9 @@ namespace Signorini
       const double size = GridTools::diameter(tria);
       for (const auto &cell : tria.active_cell_iterators())
         {
-          std::vector<unsigned int> indices;
+          std::vector<unsigned int> sorted;
           for (const auto v : cell->vertex_indices())
-            indices.push_back(cell->vertex_index(v));
-          std::vector<unsigned int> sorted(indices);
+            sorted.push_back(cell->vertex_index(v));
           std::sort(sorted.begin(), sorted.end());
           const bool repeated =
             std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
@@ -99,13 +99,14 @@ namespace Signorini
           for (const auto v : cell->vertex_indices())
             for (unsigned int w = v + 1; w < cell->n_vertices(); ++w)
               shortest = std::min(shortest, cell->vertex(v).distance(cell->vertex(w)));
-          if (repeated || !(shortest > 1e-12 * size) ||
-              !(std::abs(cell->measure()) > 0.))
+          const bool coincide = !(shortest > 1e-12 * size);
+          if (repeated || coincide || !(std::abs(cell->measure()) > 0.))
             {
               std::ostringstream msg;
               msg << "cell " << cell->index() + 1 << " is degenerate ("
                   << (repeated ? "it names a vertex twice" :
-                                 "two of its corners coincide")
+                      coincide ? "two of its corners coincide" :
+                                 "its measure is zero")
                   << "); its vertices:";
               for (const auto v : cell->vertex_indices())
                 msg << " (" << cell->vertex(v) << ")";

@@ -55,15 +55,6 @@ namespace
     "  end\nend\n";
   const std::string ironing = "subsection Mesh\n  set Global refinements = 0\nend\n"
                               "subsection Load stepping\n  set Number of steps = 40\nend\n";
-
-  std::string
-  read(const std::string &file)
-  {
-    std::ifstream     in(file);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-  }
 } // namespace
 
 int
@@ -110,7 +101,7 @@ main()
                                       "/" + name + ".log 2>&1")
                                        .c_str());
       const std::string summary_file = folder + "/summary.json";
-      const std::string text         = read(summary_file);
+      const std::string text         = RunOutput::read_text(summary_file);
       const auto        numbers      = RunOutput::summary_numbers(summary_file);
 
       out << name << ":\n"

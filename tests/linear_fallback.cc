@@ -80,14 +80,12 @@ main()
     with("false") + "subsection Solver\n  subsection Newton\n"
                     "    set Maximum iterations = 10\n  end\nend\n"
                     "subsection Load stepping\n  set Minimum step fraction = 0.5\nend\n");
-  std::ifstream     in("no_fallback/summary.json");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = RunOutput::read_text("no_fallback/summary.json");
   out << "without the fallback: exit 3, status failed, the reason names the "
          "failed CG solves: "
       << verdict(WIFEXITED(failed) && WEXITSTATUS(failed) == 3 &&
-                 text.str().find("\"status\": \"failed\"") != std::string::npos &&
-                 text.str().find("linear solve(s) failed, the last: CG") !=
+                 text.find("\"status\": \"failed\"") != std::string::npos &&
+                 text.find("linear solve(s) failed, the last: CG") !=
                    std::string::npos)
       << "\n";
 }

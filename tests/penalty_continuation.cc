@@ -28,15 +28,6 @@ using RunOutput::verdict;
 
 namespace
 {
-  std::string
-  read(const std::string &file)
-  {
-    std::ifstream     in(file);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-  }
-
   const std::string coarse = "subsection Mesh\n  set Local refinements = 3\nend\n";
 } // namespace
 
@@ -52,7 +43,7 @@ main()
              "    set Penetration tolerance = 1e-6\n"
              "    set Maximum penalty ratio = 1e4\n  end\nend\n");
   {
-    const std::string text    = read("capped/summary.json");
+    const std::string text    = RunOutput::read_text("capped/summary.json");
     const auto        numbers = RunOutput::summary_numbers("capped/summary.json");
     const double      mu0     = first_number(numbers, "initial penalty");
     double            largest = 0.;
@@ -104,7 +95,7 @@ main()
              "  subsection Penalty\n    set Minimum growth = 1e6\n"
              "    set Maximum growth = 1e6\n  end\nend\n");
   {
-    const std::string text    = read("retried/summary.json");
+    const std::string text    = RunOutput::read_text("retried/summary.json");
     const auto        numbers = RunOutput::summary_numbers("retried/summary.json");
     // Every stage in file order: its mu and whether it converged.
     std::vector<std::pair<double, bool>> stages;

@@ -13,6 +13,16 @@
 
 namespace RunOutput
 {
+  /// The whole text of a file (empty if it cannot be read).
+  inline std::string
+  read_text(const std::string &file)
+  {
+    std::ifstream     in(file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+
   /// The rows of a CSV file with a header line, as name -> value maps.
   inline std::vector<std::map<std::string, double>>
   read_csv(const std::string &file)
