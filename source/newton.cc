@@ -208,6 +208,14 @@ namespace Signorini
                             VectorType                      &rhs)
   {
     Statistics statistics;
+    // A linear solver that fails (e.g. CG without the fallback to the
+    // direct solver) is the likely cause of a Newton failure: say so.
+    const auto linear_cause = [&statistics]() -> std::string {
+      if (statistics.linear_failures == 0)
+        return "";
+      return "; " + std::to_string(statistics.linear_failures) +
+             " linear solve(s) failed, the last: " + statistics.linear_message;
+    };
     VectorType d(u), trial(u);
 
     auto full_evaluation = [&]() {
@@ -268,13 +276,7 @@ namespace Signorini
             std::ostringstream msg;
             msg << "no convergence in " << it << " Newton iterations (|g| = "
                 << residual << ", tolerance " << tolerance << ")";
-            // A linear solver that fails (e.g. CG without the fallback to
-            // the direct solver) is the likely cause: say so.
-            if (statistics.linear_failures > 0)
-              msg << "; " << statistics.linear_failures
-                  << " linear solve(s) failed, the last: "
-                  << statistics.linear_message;
-            statistics.reason = msg.str();
+            statistics.reason = msg.str() + linear_cause();
             return statistics;
           }
 
@@ -283,11 +285,7 @@ namespace Signorini
         if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
                                statistics))
           {
-            statistics.reason = "no descent direction found";
-            if (statistics.linear_failures > 0)
-              statistics.reason += "; " + std::to_string(statistics.linear_failures) +
-                                   " linear solve(s) failed, the last: " +
-                                   statistics.linear_message;
+            statistics.reason = "no descent direction found" + linear_cause();
             return statistics;
           }
 

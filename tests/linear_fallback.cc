@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -40,22 +39,17 @@ main()
   const int fallback = RunOutput::run_scene("fallback", "ssnv187_mooney_rivlin.prm",
                                             with("true"));
   const auto numbers = RunOutput::summary_numbers("fallback/summary.json");
-  double     fallbacks = 0., iterations = 0.;
-  bool       every_step = true;
-  std::string previous;
-  double      step_iterations = 0.;
+  // Each step's "newton iterations" comes before its "linear fallbacks".
+  double fallbacks = 0., iterations = 0., step_iterations = 0.;
+  bool   every_step = true;
   for (const auto &[key, value] : numbers)
-    {
-      if (previous == "steps-newton" && key == "newton iterations")
-        step_iterations = value;
-      if (key == "linear fallbacks")
-        {
-          fallbacks += value;
-          every_step &= value == step_iterations && value > 0.;
-        }
-      if (key == "time")
-        previous = "steps-newton";
-    }
+    if (key == "newton iterations")
+      step_iterations = value;
+    else if (key == "linear fallbacks")
+      {
+        fallbacks += value;
+        every_step &= value == step_iterations && value > 0.;
+      }
   iterations = first_number(numbers, "newton iterations");
   const auto steps = RunOutput::read_csv("fallback/load_steps.csv");
   double     csv_fallbacks = 0.;

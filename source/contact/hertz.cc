@@ -131,16 +131,17 @@ namespace Signorini
       {
         std::vector<std::pair<double, double>> sorted(samples);
         std::sort(sorted.begin(), sorted.end());
+        // The trapezoidal rule: sample i weighs half its two intervals.
         double error2 = 0., norm2 = 0.;
-        for (std::size_t i = 0; i + 1 < sorted.size(); ++i)
+        for (std::size_t i = 0; i < sorted.size(); ++i)
           {
-            const double dx = sorted[i + 1].first - sorted[i].first;
-            const double e0 = sorted[i].second - pressure(sorted[i].first);
-            const double e1 = sorted[i + 1].second - pressure(sorted[i + 1].first);
-            const double p0 = pressure(sorted[i].first);
-            const double p1 = pressure(sorted[i + 1].first);
-            error2 += 0.5 * dx * (e0 * e0 + e1 * e1);
-            norm2 += 0.5 * dx * (p0 * p0 + p1 * p1);
+            const double weight =
+              0.5 * (sorted[std::min(i + 1, sorted.size() - 1)].first -
+                     sorted[i > 0 ? i - 1 : 0].first);
+            const double reference = pressure(sorted[i].first);
+            const double e         = sorted[i].second - reference;
+            error2 += weight * e * e;
+            norm2 += weight * reference * reference;
           }
         if (norm2 > 0.)
           q[4].value = std::sqrt(error2 / norm2);
