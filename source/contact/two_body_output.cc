@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/contact/two_body.h>
 #include <signorini/input_error.h>
 
@@ -224,6 +225,28 @@ namespace Signorini
     template void TwoBodyContact<3>::add_output_fields(DataOut<3> &data_out, const VectorType &u, const std::vector<double> &forces);
     template void TwoBodyContact<2>::check_initial_state(const VectorType &u) const;
     template void TwoBodyContact<3>::check_initial_state(const VectorType &u) const;
+    template <int dim>
+    void
+    TwoBodyContact<dim>::save_state(OutputArchive &archive) const
+    {
+      Model<dim>::save_state(archive);
+      archive << stats.last_pairs << stats.max_pairs << stats.pattern_pairs
+              << stats.pattern_builds;
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::load_state(InputArchive &archive)
+    {
+      Model<dim>::load_state(archive);
+      archive >> stats.last_pairs >> stats.max_pairs >> stats.pattern_pairs >>
+        stats.pattern_builds;
+    }
+
+    template void TwoBodyContact<2>::save_state(OutputArchive &) const;
+    template void TwoBodyContact<3>::save_state(OutputArchive &) const;
+    template void TwoBodyContact<2>::load_state(InputArchive &);
+    template void TwoBodyContact<3>::load_state(InputArchive &);
     template void TwoBodyContact<2>::write_summary(Json &c) const;
     template void TwoBodyContact<3>::write_summary(Json &c) const;
   } // namespace Contact

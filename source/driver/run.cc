@@ -1,6 +1,8 @@
-#include <signorini/input_error.h>
+#include <signorini/driver/checkpoint.h>
 #include <signorini/driver/run.h>
 #include <signorini/driver/study.h>
+#include <signorini/input_error.h>
+#include <signorini/interruption.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -224,6 +226,10 @@ namespace Signorini
              "study of its Study subsection)\n"
              "       signorini --check FILE.prm ...   (read and check the "
              "input only: no solve, nothing written)\n"
+             "       signorini --restart DIR [FILE.prm]   (continue the run "
+             "whose output directory is DIR\n"
+             "                 from its newest checkpoint; FILE.prm may "
+             "extend End time or Number of cycles)\n"
              "       signorini --print-parameters   (every entry with its "
              "default, pattern and documentation)\n"
              "       signorini --help\n\n"
@@ -237,7 +243,9 @@ namespace Signorini
              "relative to the folder of FILE.prm.\n"
              "Exit status: 0 converged (--check: valid input), 2 bad input, 3 solve failed (last "
              "converged step kept),\n4 a quantity is outside its "
-             "requested tolerance, 1 internal error.\n";
+             "requested tolerance, 1 internal error, 130 / 143 interrupted by\n"
+             "SIGINT / SIGTERM (checkpoint of the last converged step written; "
+             "a second signal exits at once).\n";
     }
 
     /// Build the scene (mesh, DoFs, every input check) without solving.
@@ -250,9 +258,12 @@ namespace Signorini
 
     template <int dim>
     Report
-    run_scene(ParameterHandler &prm, const std::string &file, const bool quiet)
+    run_scene(ParameterHandler  &prm,
+              const std::string &file,
+              const bool         quiet,
+              const std::string &checkpoint = "")
     {
-      Simulator<dim> simulator(prm, file, quiet, MPI_COMM_WORLD);
+      Simulator<dim> simulator(prm, file, quiet, MPI_COMM_WORLD, checkpoint);
       return simulator.run(prm);
     }
   } // namespace
@@ -396,15 +407,18 @@ namespace Signorini
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return success;
       }
-    const bool study = (args.size() == 2 && args[0] == "--study");
-    const bool check = (args.size() >= 2 && args[0] == "--check");
-    if (study || check)
+    const bool study   = (args.size() == 2 && args[0] == "--study");
+    const bool check   = (args.size() >= 2 && args[0] == "--check");
+    const bool restart = ((args.size() == 2 || args.size() == 3) &&
+                          args[0] == "--restart");
+    if (study || check || restart)
       args.erase(args.begin());
     const bool names_files =
       std::none_of(args.begin(), args.end(), [](const std::string &a) {
         return a.empty() || a[0] == '-';
       });
-    if ((args.size() != 1 && !check) || !names_files)
+    if ((args.size() != 1 && !check && !(restart && args.size() == 2)) ||
+        !names_files)
       {
         if (root)
           {
@@ -441,15 +455,8 @@ namespace Signorini
         return worst;
       }
 
-    const std::string file = args[0];
-    return guarded(file, root, [&]() -> int {
-      read_parameter_file(prm, file);
-      if (study)
-        return Study::run(file, prm, MPI_COMM_WORLD);
-      const unsigned int dim = prm.get_integer("Dimension");
-      const Report       report =
-        (dim == 2 ? run_scene<2>(prm, file, quiet) : run_scene<3>(prm, file, quiet));
-
+    // The report on the screen and the exit code of a run.
+    auto finish = [&](const Report &report) -> int {
       bool in_tolerance = true;
       for (const auto &q : report.quantities)
         in_tolerance &= q.within_tolerance();
@@ -478,6 +485,12 @@ namespace Signorini
       if (root && on_report)
         on_report(report);
 
+      if (report.status == "interrupted")
+        {
+          if (root)
+            std::cerr << "signorini: interrupted: " << report.reason << std::endl;
+          return 128 + report.interrupt_signal;
+        }
       if (report.status != "converged")
         {
           if (root)
@@ -486,6 +499,69 @@ namespace Signorini
           return solve_failed;
         }
       return in_tolerance ? success : out_of_tolerance;
+    };
+
+    if (restart)
+      {
+        const std::string directory = args[0];
+        return guarded(directory, root, [&]() -> int {
+          const std::string        folder = Checkpoint::newest(directory);
+          const Checkpoint::Header header = Checkpoint::read_header(folder);
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+          if (header.n_ranks != n_ranks)
+            throw InputError("--restart",
+                             folder + " was written by " +
+                               std::to_string(header.n_ranks) +
+                               " MPI rank(s); restart it with as many (this "
+                               "run has " + std::to_string(n_ranks) + ")");
+          std::string file;
+          if (args.size() == 2)
+            {
+              file = args[1];
+              read_parameter_file(prm, file);
+            }
+          else
+            {
+              // The checkpoint's own parameters, named as the original file
+              // (relative paths in them are relative to its folder).
+              file = header.parameter_file;
+              std::istringstream in(header.parameters);
+              prm.parse_input(in, file, "", false);
+            }
+          const auto changes = Checkpoint::incompatible_changes(header.parameters, prm);
+          if (!changes.empty())
+            {
+              std::string list;
+              for (const auto &c : changes)
+                list += "\n  " + c;
+              throw InputError(args.size() == 2 ? args[1] : "--restart",
+                               "the checkpoint " + folder +
+                                 " cannot continue with changed entries (only "
+                                 "Load stepping > End time, Mesh refinement > "
+                                 "Number of cycles, Output directory, Output and "
+                                 "Checkpoint may change):" + list);
+            }
+          // The run's output directory holds checkpoints/checkpoint-N.
+          prm.set("Output directory",
+                  std::filesystem::path(folder).parent_path().parent_path().string());
+          Interruption::install();
+          const Report report =
+            (header.dimension == 2 ? run_scene<2>(prm, file, quiet, folder) :
+                                     run_scene<3>(prm, file, quiet, folder));
+          return finish(report);
+        });
+      }
+
+    const std::string file = args[0];
+    return guarded(file, root, [&]() -> int {
+      read_parameter_file(prm, file);
+      if (study)
+        return Study::run(file, prm, MPI_COMM_WORLD);
+      Interruption::install();
+      const unsigned int dim = prm.get_integer("Dimension");
+      const Report       report =
+        (dim == 2 ? run_scene<2>(prm, file, quiet) : run_scene<3>(prm, file, quiet));
+      return finish(report);
     });
   }
 } // namespace Signorini

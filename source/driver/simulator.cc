@@ -1,5 +1,8 @@
+#include <signorini/archive_io.h>
+#include <signorini/driver/checkpoint.h>
 #include <signorini/driver/simulator.h>
 #include <signorini/input_error.h>
+#include <signorini/interruption.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/contact_report.h>
 #include <signorini/output/summary.h>
@@ -9,6 +12,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace Signorini
@@ -17,7 +22,8 @@ namespace Signorini
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &parameter_file,
                             const bool         quiet,
-                            MPI_Comm           comm)
+                            MPI_Comm           comm,
+                            const std::string &restart_checkpoint)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 && !quiet)
     , progress(std::cout, false)
@@ -37,11 +43,16 @@ namespace Signorini
     for (const auto &body : parameters.bodies)
       report.materials.push_back(body.material->name());
 
-    scene   = std::make_unique<Scene<dim>>(parameters, comm);
+    restart_folder = restart_checkpoint;
+    if (!restart_folder.empty())
+      mesh_as_built = Checkpoint::read_header(restart_folder).mesh_as_built;
+    scene = std::make_unique<Scene<dim>>(
+      parameters, comm,
+      mesh_as_built ? "" : Checkpoint::mesh_file(restart_folder));
     problem = std::make_unique<Problem<dim>>(parameters, *scene);
     Contact::Model<dim> *const contact = problem->contact.get();
     const auto                &refinement = parameters.refinement;
-    if (refinement.band_refinements > 0)
+    if (refinement.band_refinements > 0 && mesh_as_built)
       {
         if (!contact)
           throw InputError("Mesh refinement > Contact band refinements",
@@ -73,15 +84,20 @@ namespace Signorini
         report.iteration_name = solver->iteration_name();
         scene->setup_dofs(contact);
         setup_dofs();
+        if (!restart_folder.empty())
+          restore(restart_folder);
       }
     catch (...)
       {
         timer.reset(); // quietly, while the exception is caught
         throw;
       }
+    load_steps = std::make_unique<LoadStepTable>(
+      report.output_directory, Utilities::MPI::this_mpi_process(comm) == 0);
     if (contact)
       {
-        contact->check_initial_state(scene->solution_ghosted);
+        if (restart_folder.empty())
+          contact->check_initial_state(scene->solution_ghosted);
         postprocessor->extra_fields = [this, contact](DataOut<dim> &data_out) {
           contact->add_fields(data_out, scene->solution_ghosted);
         };
@@ -136,6 +152,7 @@ namespace Signorini
       solver->add_quantities(report.quantities);
     }
     report.steps.push_back(record);
+    load_steps->append(report.steps.size(), record, dim);
     if (!series.empty())
       {
         TimerOutput::Scope scope(*timer, "output");
@@ -145,23 +162,30 @@ namespace Signorini
       }
   }
 
+
   template <int dim>
-  unsigned int
-  Simulator<dim>::load_path()
+  void
+  Simulator<dim>::load_path(const Timer &run_timer)
   {
     const double end_time  = parameters.load_stepping.end_time;
     const double full_step = end_time / parameters.load_stepping.n_steps;
-    double       t = 0., dt = full_step;
-    unsigned int step = 0, cuts = 0;
-    VectorType  &solution = scene->solution;
+    dt                     = (dt > 0. ? std::min(dt, full_step) : full_step);
+    const double start_time    = time;
+    const double start_elapsed = elapsed(run_timer);
+    unsigned int cuts          = 0;
+    VectorType  &solution      = scene->solution;
     VectorType   backup(solution);
-    while (t < end_time * (1. - 1e-12))
+    while (time < end_time * (1. - 1e-12))
       {
-        double t_new = std::min(t + dt, end_time);
+        double t_new = std::min(time + dt, end_time);
         if (end_time - t_new < 1e-9 * end_time)
           t_new = end_time;
+        std::ostringstream what;
+        what << "load step " << step + 1 << " (t = " << t_new << ")";
+        activity = what.str();
+        Interruption::throw_if_requested(comm);
         pcout << "Load step " << step + 1 << ": t = " << t_new
-              << " (dt = " << t_new - t << ")" << std::endl;
+              << " (dt = " << t_new - time << ")" << std::endl;
         backup = solution;
         StepStatistics              stats;
         Report::Step                record{};
@@ -184,7 +208,7 @@ namespace Signorini
             if (dt < min_step)
               {
                 std::ostringstream msg;
-                msg << "the load step from t = " << t << " to t = " << t_new
+                msg << "the load step from t = " << time << " to t = " << t_new
                     << " failed and the step size fell below the minimum "
                     << min_step
                     << " (Load stepping > Minimum step fraction); last "
@@ -194,32 +218,58 @@ namespace Signorini
               }
             continue;
           }
-        t = t_new;
+        time = t_new;
         ++step;
         record.cuts_before = cuts;
         cuts               = 0;
-        complete_step(t, step, stats, record, "solution");
+        complete_step(time, step, stats, record, "solution");
         // Grow back towards the requested step after easy steps.
         if (stats.iterations <= 5 * std::max<std::size_t>(1, record.stages.size()) &&
             dt < full_step)
           dt = std::min(2. * dt, full_step);
+        snapshot();
+        checkpoint(run_timer, false);
+
+        // Elapsed time and a linear estimate of the time left, on the
+        // screen and in progress.json.
+        const double spent = elapsed(run_timer);
+        const double left  = (time > start_time) ?
+                               (spent - start_elapsed) / (time - start_time) *
+                                 (end_time - time) :
+                               0.;
+        pcout << "  converged; " << std::fixed << std::setprecision(1) << spent
+              << " s elapsed, about " << left << " s left in the load path"
+              << std::defaultfloat << std::setprecision(6) << std::endl;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          write_progress(report.output_directory, "running", time, end_time,
+                         step, 0, spent, left);
       }
-    return step;
   }
 
   template <int dim>
   std::map<std::string, double>
   Simulator<dim>::phase_times() const
   {
-    std::map<std::string, double> times;
+    std::map<std::string, double> times = previous_times;
+    times.erase("total");
+    times.erase("setup");
     for (const auto &entry : timer->get_summary_data(TimerOutput::total_wall_time))
-      times[entry.first] = Utilities::MPI::max(entry.second, comm);
+      times[entry.first] += Utilities::MPI::max(entry.second, comm);
     return times;
   }
 
   template <int dim>
+  double
+  Simulator<dim>::elapsed(const Timer &run_timer) const
+  {
+    const auto previous = previous_times.find("total");
+    return (previous == previous_times.end() ? 0. : previous->second) +
+           setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
+  }
+
+  template <int dim>
   void
-  Simulator<dim>::refinement_cycles(unsigned int step, const Timer &run_timer)
+  Simulator<dim>::refinement_cycles(const Timer &run_timer)
   {
     const unsigned int n_cycles = parameters.refinement.cycles;
     if (n_cycles == 0)
@@ -238,34 +288,46 @@ namespace Signorini
       c.refined_cells     = refined;
       c.h_min             = report.h_min;
       c.cycle_seconds     = cycle_seconds;
-      c.wall_seconds = setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
-      c.quantities   = report.quantities;
-      c.timing       = phase_times();
+      c.wall_seconds      = elapsed(run_timer);
+      c.quantities        = report.quantities;
+      c.timing            = phase_times();
       report.cycles.push_back(c);
     };
-    record_cycle(0, report.newton_iterations, 0,
-                 setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm));
-    {
-      TimerOutput::Scope scope(*timer, "output");
-      postprocessor->write_output(scene->solution_ghosted, 0, 0, true, "refinement");
-    }
-    for (unsigned int cycle = 1; cycle <= n_cycles; ++cycle)
+    if (report.cycles.empty())
       {
-        Timer        cycle_timer;
-        unsigned int refined = 0;
+        record_cycle(0, report.newton_iterations, 0, elapsed(run_timer));
         {
-          TimerOutput::Scope scope(*timer, "refinement");
-          scene->solution_ghosted = scene->solution;
-          refined = Refinement::estimate_and_mark(scene->triangulation,
-                                                  *scene->mapping,
-                                                  scene->dof_handler,
-                                                  problem->contact.get(),
-                                                  scene->solution_ghosted,
-                                                  parameters.refinement);
-          scene->refine_and_transfer(problem->contact.get(), end_time);
-          setup_dofs();
+          TimerOutput::Scope scope(*timer, "output");
+          postprocessor->write_output(scene->solution_ghosted, 0, 0, true, "refinement");
         }
-        pcout << "Refinement cycle " << cycle << ": " << refined
+        snapshot();
+        checkpoint(run_timer, false);
+      }
+    for (unsigned int cycle = report.cycles.size(); cycle <= n_cycles; ++cycle)
+      {
+        activity = "refinement cycle " + std::to_string(cycle);
+        Interruption::throw_if_requested(comm);
+        Timer cycle_timer;
+        if (!mesh_ready)
+          {
+            TimerOutput::Scope scope(*timer, "refinement");
+            scene->solution_ghosted = scene->solution;
+            refined_cells = Refinement::estimate_and_mark(scene->triangulation,
+                                                          *scene->mapping,
+                                                          scene->dof_handler,
+                                                          problem->contact.get(),
+                                                          scene->solution_ghosted,
+                                                          parameters.refinement);
+            scene->refine_and_transfer(problem->contact.get(), end_time);
+            setup_dofs();
+            mesh_as_built = false;
+            // A new mesh: what an interruption of this cycle's solve
+            // saves and a restart continues from.
+            mesh_ready = true;
+            snapshot();
+            checkpoint(run_timer, false);
+          }
+        pcout << "Refinement cycle " << cycle << ": " << refined_cells
               << " cells refined, " << report.n_cells << " cells, "
               << report.n_dofs << " DoFs";
         if (problem->contact)
@@ -281,6 +343,7 @@ namespace Signorini
                 << " DoFs) failed at t = " << end_time << ": " << stats.reason;
             throw SolveFailure(msg.str());
           }
+        mesh_ready = false;
         ++step;
         complete_step(end_time, step, stats, record, "");
         {
@@ -288,9 +351,245 @@ namespace Signorini
           postprocessor->write_output(scene->solution_ghosted, cycle, cycle,
                                       true, "refinement");
         }
-        record_cycle(cycle, stats.iterations, refined,
+        record_cycle(cycle, stats.iterations, refined_cells,
                      Utilities::MPI::max(cycle_timer.wall_time(), comm));
+        snapshot();
+        checkpoint(run_timer, false);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          write_progress(report.output_directory, "running", time, end_time,
+                         step, cycle, elapsed(run_timer), 0.);
       }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::snapshot()
+  {
+    resume.time          = time;
+    resume.dt            = dt;
+    resume.step          = step;
+    resume.mesh_ready    = mesh_ready;
+    resume.mesh_as_built = mesh_as_built;
+    resume.refined_cells = refined_cells;
+    resume.report        = report;
+    resume.solution      = VectorType(scene->solution);
+    resume.pattern       = VectorType(scene->pattern_state);
+    {
+      std::ostringstream out;
+      {
+        OutputArchive archive(out);
+        if (problem->contact)
+          problem->contact->save_state(archive);
+        solver->save_state(archive);
+        postprocessor->save_state(archive);
+      }
+      resume.parts = out.str();
+    }
+    resume.file_sizes.clear();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      for (const std::string name : {"load_steps.csv", "reactions.csv"})
+        {
+          const std::string file = report.output_directory + "/" + name;
+          std::error_code   ec;
+          const auto        size = std::filesystem::file_size(file, ec);
+          if (!ec)
+            resume.file_sizes[name] = size;
+        }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::checkpoint(const Timer &run_timer, const bool force)
+  {
+    ++steps_since_checkpoint;
+    if (!force)
+      {
+        if (!periodic_checkpoints)
+          return;
+        const double minutes = parameters.checkpoint.every_minutes;
+        if (steps_since_checkpoint < parameters.checkpoint.every_steps &&
+            !(minutes > 0. &&
+              elapsed(run_timer) - last_checkpoint_time >= 60. * minutes))
+          return;
+      }
+    TimerOutput::Scope scope(*timer, "checkpoint");
+    const bool         root   = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string &output = report.output_directory;
+    const unsigned int sequence = checkpoint_sequence;
+    const std::string  final_folder = Checkpoint::folder(output, sequence);
+    const std::string  folder =
+      Checkpoint::root(output) + "/.writing-" + std::to_string(sequence);
+    auto collective_check = [&](std::string error, const std::string &what) {
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw std::runtime_error("cannot " + what + " the checkpoint " +
+                                 final_folder + ": " + error);
+    };
+    {
+      std::string error;
+      if (root)
+        {
+          std::error_code ec;
+          std::filesystem::remove_all(folder, ec);
+          std::filesystem::create_directories(folder, ec);
+          if (ec)
+            error = ec.message();
+        }
+      collective_check(error, "create");
+    }
+
+    scene->save(Checkpoint::mesh_file(folder), resume.solution, resume.pattern);
+
+    Checkpoint::Header header;
+    header.dimension      = dim;
+    header.n_ranks        = Utilities::MPI::n_mpi_processes(comm);
+    header.sequence       = sequence;
+    header.parameter_file = report.parameter_file;
+    header.parameters     = used_parameters;
+    header.mesh_as_built  = resume.mesh_as_built;
+    Report saved          = resume.report;
+    saved.timing          = phase_times();
+    saved.timing["setup"] =
+      (previous_times.count("setup") ? previous_times.at("setup") : 0.) +
+      setup_seconds;
+    saved.timing["total"] = elapsed(run_timer);
+    {
+      std::ofstream out(Checkpoint::state_file(folder,
+                                               Utilities::MPI::this_mpi_process(comm)),
+                        std::ios::binary);
+      {
+        OutputArchive archive(out);
+        archive << header;
+        archive << resume.time << resume.dt << resume.step << resume.mesh_ready
+                << resume.refined_cells << saved << resume.file_sizes
+                << resume.parts;
+        // This rank's entries of the vectors, for a mesh built as before.
+        std::vector<double> values;
+        for (const VectorType *v : {&resume.solution, &resume.pattern})
+          {
+            values.clear();
+            for (const auto i : scene->locally_owned)
+              values.push_back((*v)[i]);
+            archive << values;
+          }
+      }
+      out.flush();
+      const bool ok = static_cast<bool>(out);
+      if (Utilities::MPI::min(ok ? 1 : 0, comm) == 0)
+        collective_check("a state file could not be written", "write");
+    }
+    {
+      std::string error;
+      if (root)
+        {
+          std::ofstream prm(folder + "/parameters.prm");
+          prm << used_parameters;
+          std::error_code ec;
+          std::filesystem::remove_all(final_folder, ec);
+          std::filesystem::rename(folder, final_folder, ec);
+          if (ec)
+            error = ec.message();
+          else
+            {
+              // Keep the newest ones.
+              const auto all = Checkpoint::list(output);
+              for (std::size_t i = 0;
+                   i + parameters.checkpoint.keep < all.size();
+                   ++i)
+                std::filesystem::remove_all(all[i], ec);
+            }
+        }
+      collective_check(error, "complete");
+    }
+    report.last_checkpoint = final_folder;
+    resume.report.last_checkpoint = final_folder;
+    ++checkpoint_sequence;
+    steps_since_checkpoint = 0;
+    last_checkpoint_time   = elapsed(run_timer);
+    pcout << "  checkpoint " << final_folder << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::restore(const std::string &folder)
+  {
+    const std::string file =
+      Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+      throw InputError("--restart", "cannot read '" + file + "'");
+    Checkpoint::Header header;
+    Report             saved;
+    std::string        parts;
+    InputArchive       archive(in);
+    archive >> header;
+    archive >> time >> dt >> step >> mesh_ready >> refined_cells >> saved >>
+      resume.file_sizes >> parts;
+
+    // The solution and the state the Hessian's structure was built at.
+    if (header.mesh_as_built)
+      {
+        // The same mesh and DoF numbering as the run that wrote it.
+        std::vector<double> values[2];
+        archive >> values[0] >> values[1];
+        if (values[0].size() != scene->locally_owned.n_elements())
+          throw InputError("--restart",
+                           file + " holds " + std::to_string(values[0].size()) +
+                             " DoFs of this rank, the mesh built from the "
+                             "parameters has " +
+                             std::to_string(scene->locally_owned.n_elements()));
+        VectorType pattern(scene->locally_owned, comm);
+        std::size_t k = 0;
+        for (const auto i : scene->locally_owned)
+          {
+            scene->solution[i] = values[0][k];
+            pattern[i]         = values[1][k++];
+          }
+        scene->solution.compress(VectorOperation::insert);
+        pattern.compress(VectorOperation::insert);
+        scene->solution_ghosted = scene->solution;
+        VectorType ghosted(scene->locally_owned, scene->locally_relevant, comm);
+        ghosted = pattern;
+        scene->build_matrix(ghosted);
+      }
+    else
+      scene->load_vectors();
+    mesh_as_built = header.mesh_as_built;
+
+    report.final_time        = saved.final_time;
+    report.step_cuts         = saved.step_cuts;
+    report.newton_iterations = saved.newton_iterations;
+    report.steps             = saved.steps;
+    report.cycles            = saved.cycles;
+    report.quantities        = saved.quantities;
+    report.restarted_from    = saved.restarted_from;
+    report.restarted_from.push_back(folder);
+    previous_times = saved.timing;
+    if (!report.cycles.empty() &&
+        time < parameters.load_stepping.end_time * (1. - 1e-12))
+      throw InputError("Load stepping > End time",
+                       "the checkpoint is in the refinement cycles, after the "
+                       "load path to t = " + std::to_string(time) +
+                         ": the load path cannot be extended any more");
+
+    std::istringstream part_stream(parts);
+    InputArchive       part_archive(part_stream);
+    if (problem->contact)
+      problem->contact->load_state(part_archive);
+    solver->load_state(part_archive);
+    postprocessor->load_state(part_archive);
+
+    // The appended files back to their state at the checkpoint.
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      for (const auto &[name, size] : resume.file_sizes)
+        {
+          const std::string path = report.output_directory + "/" + name;
+          std::error_code   ec;
+          if (std::filesystem::exists(path, ec) &&
+              std::filesystem::file_size(path, ec) > size)
+            std::filesystem::resize_file(path, size, ec);
+        }
+    checkpoint_sequence = header.sequence + 1;
   }
 
   template <int dim>
@@ -301,17 +600,25 @@ namespace Signorini
     const std::string &output_directory = report.output_directory;
     Timer              run_timer;
     {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      used_parameters = text.str();
+    }
+    {
       std::string error;
       if (root)
         {
           std::error_code ec;
           std::filesystem::create_directories(output_directory, ec);
+          // A new run replaces the checkpoints of an earlier one there.
+          if (!ec && restart_folder.empty())
+            std::filesystem::remove_all(Checkpoint::root(output_directory), ec);
           if (ec)
             error = ec.message();
           else
             {
               AtomicFile out(output_directory + "/used_parameters.prm");
-              prm.print_parameters(out.stream(), ParameterHandler::ShortPRM);
+              out.stream() << used_parameters;
               if (!out.commit())
                 error = "cannot write into it";
             }
@@ -326,13 +633,41 @@ namespace Signorini
           << " cells, " << report.n_dofs << " DoFs (Q" << report.degree << "), "
           << report.n_ranks << " MPI rank(s)" << std::endl
           << "Output in " << output_directory << std::endl;
+    if (!restart_folder.empty())
+      pcout << "Restarted from " << restart_folder << " at t = " << time
+            << " (" << step << " converged steps)" << std::endl;
 
-    scene->solution         = 0.;
-    scene->solution_ghosted = scene->solution;
-    postprocessor->write_output(scene->solution_ghosted, 0., 0, false);
+    periodic_checkpoints = parameters.checkpoint.enabled(
+      parameters.load_stepping.n_steps, report.n_dofs);
+    auto summary = [&]() {
+      write_summary(report,
+                    parameters.refinement,
+                    problem->contact.get(),
+                    *solver,
+                    problem->incompressibility ?
+                      problem->incompressibility->cells().size() :
+                      0u,
+                    comm);
+    };
+    // Until the run ends, summary.json says it is running: never the
+    // summary of an earlier run in the same folder.
+    report.status = "running";
+    summary();
+    if (restart_folder.empty())
+      {
+        load_steps->start(report.iteration_name, dim);
+        scene->solution         = 0.;
+        scene->solution_ghosted = scene->solution;
+        postprocessor->write_output(scene->solution_ghosted, 0., 0, false);
+      }
+    else
+      scene->solution_ghosted = scene->solution;
+    snapshot();
     try
       {
-        refinement_cycles(load_path(), run_timer);
+        if (report.cycles.empty())
+          load_path(run_timer);
+        refinement_cycles(run_timer);
         report.status = "converged";
       }
     catch (const SolveFailure &e)
@@ -341,21 +676,39 @@ namespace Signorini
         report.reason = e.what();
         // The solver's last iterate of the failed step, for diagnosis (not
         // part of the solution series).
-        std::string snapshot;
+        std::string snapshot_name;
         if (failed_iterate.size() > 0)
           {
             scene->solution_ghosted = failed_iterate;
-            snapshot = postprocessor->write_snapshot(scene->solution_ghosted,
-                                                     "failed_iterate");
+            snapshot_name = postprocessor->write_snapshot(scene->solution_ghosted,
+                                                          "failed_iterate");
             scene->solution_ghosted = scene->solution;
           }
         pcout << "Run failed: " << report.reason << std::endl
               << "The output of the last converged step (t = "
               << report.final_time << ") is in " << output_directory;
-        if (!snapshot.empty())
+        if (!snapshot_name.empty())
           pcout << "; the solver's last iterate of the failed step is in "
-                << snapshot << " there";
+                << snapshot_name << " there";
         pcout << std::endl;
+      }
+    catch (const Interruption::Interrupted &e)
+      {
+        // Back to the last converged state: its record, and a checkpoint
+        // of it.
+        const std::string during = activity;
+        report                   = resume.report;
+        report.status            = "interrupted";
+        report.interrupt_signal  = e.signal_number;
+        report.interrupted_during = during;
+        checkpoint(run_timer, true);
+        report.reason = Interruption::signal_name(e.signal_number) +
+                        " received during " + during +
+                        "; the last converged step (t = " +
+                        std::to_string(report.final_time) +
+                        ") is on disk; continue with: signorini --restart " +
+                        output_directory;
+        pcout << "Run interrupted: " << report.reason << std::endl;
       }
 
     {
@@ -364,18 +717,17 @@ namespace Signorini
       report.peak_memory_mb =
         Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024., comm);
     }
+    const double previous_setup =
+      previous_times.count("setup") ? previous_times.at("setup") : 0.;
     report.timing          = phase_times();
-    report.timing["setup"] = setup_seconds;
-    report.timing["total"] =
-      setup_seconds + Utilities::MPI::max(run_timer.wall_time(), comm);
-    write_summary(report,
-                  parameters.refinement,
-                  problem->contact.get(),
-                  *solver,
-                  problem->incompressibility ?
-                    problem->incompressibility->cells().size() :
-                    0u,
-                  comm);
+    report.timing["setup"] = previous_setup + setup_seconds;
+    report.timing["total"] = elapsed(run_timer);
+    summary();
+    if (root)
+      write_progress(output_directory, report.status, report.final_time,
+                     parameters.load_stepping.end_time, report.steps.size(),
+                     report.cycles.empty() ? 0 : report.cycles.size() - 1,
+                     report.timing["total"], 0.);
     if (postprocessor->verbosity() == PostprocessParameters::Verbosity::verbose)
       timer->print_summary();
     return report;

@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/input_error.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/postprocess.h>
@@ -424,6 +425,20 @@ namespace Signorini
                            DataOut<dim>::curved_inner_cells);
     return data_out.write_vtu_with_pvtu_record(output_directory + "/", name, 0,
                                                dof_handler.get_communicator(), 4);
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::save_state(OutputArchive &archive) const
+  {
+    archive << pvd_records << xdmf_entries << reactions_header_written;
+  }
+
+  template <int dim>
+  void
+  Postprocessor<dim>::load_state(InputArchive &archive)
+  {
+    archive >> pvd_records >> xdmf_entries >> reactions_header_written;
   }
 
   template class Postprocessor<2>;

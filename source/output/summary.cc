@@ -1,3 +1,4 @@
+#include <signorini/interruption.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/summary.h>
 
@@ -8,8 +9,9 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <vector>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace Signorini
 {
@@ -55,6 +57,20 @@ namespace Signorini
     j["status"]         = report.status;
     if (!report.reason.empty())
       j["reason"] = report.reason;
+    if (report.interrupt_signal != 0)
+      {
+        j["interrupted by"]     = Interruption::signal_name(report.interrupt_signal);
+        j["interrupted during"] = report.interrupted_during;
+      }
+    if (!report.last_checkpoint.empty())
+      j["checkpoint"] = report.last_checkpoint;
+    if (!report.restarted_from.empty())
+      {
+        Json from = Json::array();
+        for (const auto &c : report.restarted_from)
+          from.push_back(c);
+        j["restarted from"] = from;
+      }
     j["dimension"] = report.dimension;
     Json &mesh     = j["mesh"];
     mesh["cells"]  = report.n_cells;
@@ -222,36 +238,85 @@ namespace Signorini
           }
       }
 
-    files.push_back(std::make_unique<AtomicFile>(output_directory + "/load_steps.csv"));
-    std::ostream &csv = files.back()->stream();
-    csv << "step,time," << report.iteration_name
+    for (auto &file : files)
+      if (std::string reason; !file->commit(&reason))
+        std::cerr << "signorini: warning: " << reason << std::endl;
+  }
+
+  LoadStepTable::LoadStepTable(const std::string &output_directory, const bool writer)
+    : file(output_directory + "/load_steps.csv")
+    , writer(writer)
+  {}
+
+  void
+  LoadStepTable::start(const std::string &iteration_name, const unsigned int dim)
+  {
+    if (!writer)
+      return;
+    AtomicFile out(file);
+    std::ostream &csv = out.stream();
+    csv << "step,time," << iteration_name
         << "_iterations,backtracks,regularized_steps,"
            "linear_iterations,linear_fallbacks,cuts_before,residual,energy,min_J,"
            "penalty_stages,final_penalty,active_contact_nodes,"
            "max_penetration_over_h,contact_force";
     for (unsigned int d = 0; d < dim; ++d)
       csv << ",contact_force_" << "xyz"[d];
-    csv << ",evaluated_pairs\n"
-        << std::setprecision(12);
-    for (unsigned int i = 0; i < report.steps.size(); ++i)
-      {
-        const auto &s = report.steps[i];
-        csv << i + 1 << "," << s.time << "," << s.newton_iterations << ","
-            << s.backtracks << "," << s.regularized << ","
-            << s.linear_iterations << "," << s.linear_fallbacks << ","
-            << s.cuts_before << ","
-            << s.residual << "," << s.energy << "," << s.min_J << ","
-            << s.stages.size() << ","
-            << (s.stages.empty() ? 0. : s.stages.back().mu) << ","
-            << s.active_nodes << "," << s.penetration_ratio << ","
-            << s.contact_force_vector[dim - 1];
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << "," << s.contact_force_vector[d];
-        csv << "," << s.pairs << "\n";
-      }
-    for (auto &file : files)
-      if (std::string reason; !file->commit(&reason))
-        std::cerr << "signorini: warning: " << reason << std::endl;
+    csv << ",evaluated_pairs\n";
+    if (std::string reason; !out.commit(&reason))
+      std::cerr << "signorini: warning: " << reason << std::endl;
+  }
+
+  void
+  LoadStepTable::append(const unsigned int   index,
+                        const Report::Step &s,
+                        const unsigned int   dim)
+  {
+    if (!writer)
+      return;
+    // The whole row in one write, flushed at once: a reader (or a run
+    // killed right now) sees whole rows only.
+    std::ostringstream row;
+    row << std::setprecision(12) << index << "," << s.time << ","
+        << s.newton_iterations << "," << s.backtracks << "," << s.regularized
+        << "," << s.linear_iterations << "," << s.linear_fallbacks << ","
+        << s.cuts_before << "," << s.residual << "," << s.energy << ","
+        << s.min_J << "," << s.stages.size() << ","
+        << (s.stages.empty() ? 0. : s.stages.back().mu) << ","
+        << s.active_nodes << "," << s.penetration_ratio << ","
+        << s.contact_force_vector[dim - 1];
+    for (unsigned int d = 0; d < dim; ++d)
+      row << "," << s.contact_force_vector[d];
+    row << "," << s.pairs << "\n";
+    std::ofstream csv(file, std::ios::app);
+    csv << row.str() << std::flush;
+    if (!csv)
+      std::cerr << "signorini: warning: cannot append to " << file << std::endl;
+  }
+
+  void
+  write_progress(const std::string &output_directory,
+                 const std::string &status,
+                 const double       time,
+                 const double       end_time,
+                 const unsigned int step,
+                 const unsigned int cycle,
+                 const double       elapsed_seconds,
+                 const double       remaining_seconds)
+  {
+    Json j                            = Json::object();
+    j["status"]                       = status;
+    j["time"]                         = time;
+    j["end time"]                     = end_time;
+    j["load step"]                    = step;
+    j["refinement cycle"]             = cycle;
+    j["elapsed wall time [s]"]        = elapsed_seconds;
+    j["estimated remaining time [s]"] = remaining_seconds;
+    AtomicFile out(output_directory + "/progress.json");
+    j.write(out.stream());
+    out.stream() << "\n";
+    if (std::string reason; !out.commit(&reason))
+      std::cerr << "signorini: warning: " << reason << std::endl;
   }
 
   template void

@@ -289,6 +289,7 @@ namespace Signorini
       Solver::declare_parameters(prm);
       Contact::declare_parameters(prm);
       Postprocessor<2>::declare_parameters(prm);
+      CheckpointParameters::declare_parameters(prm);
     }
 
     void
@@ -373,6 +374,7 @@ namespace Signorini
         }
 
       postprocess.parse_parameters(prm, dim);
+      checkpoint.parse_parameters(prm);
     }
 
     std::vector<types::material_id>

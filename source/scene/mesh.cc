@@ -573,7 +573,8 @@ namespace Signorini
   build_scene_mesh(const MeshParameters                      &mesh,
                    const std::vector<BodyGeometry>           &bodies,
                    const std::vector<types::material_id>     &material_ids,
-                   parallel::distributed::Triangulation<dim> &tria)
+                   parallel::distributed::Triangulation<dim> &tria,
+                   const bool                                 coarse_only)
   {
     std::vector<ManifoldSpec<dim>> manifolds;
     if (mesh.source == MeshParameters::Source::gmsh)
@@ -628,6 +629,8 @@ namespace Signorini
       else
         tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
 
+    if (coarse_only)
+      return;
     check_refined_size(tria.n_global_active_cells(), dim,
                        mesh.global_refinements, tria.get_communicator());
     tria.refine_global(mesh.global_refinements);
@@ -659,10 +662,12 @@ namespace Signorini
   build_scene_mesh<2>(const MeshParameters &,
                       const std::vector<BodyGeometry> &,
                       const std::vector<types::material_id> &,
-                      parallel::distributed::Triangulation<2> &);
+                      parallel::distributed::Triangulation<2> &,
+                      const bool);
   template void
   build_scene_mesh<3>(const MeshParameters &,
                       const std::vector<BodyGeometry> &,
                       const std::vector<types::material_id> &,
-                      parallel::distributed::Triangulation<3> &);
+                      parallel::distributed::Triangulation<3> &,
+                      const bool);
 } // namespace Signorini

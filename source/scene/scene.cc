@@ -16,7 +16,9 @@
 namespace Signorini
 {
   template <int dim>
-  Scene<dim>::Scene(const Parameters::Scene &p, MPI_Comm comm)
+  Scene<dim>::Scene(const Parameters::Scene &p,
+                    MPI_Comm                 comm,
+                    const std::string       &mesh_file)
     : comm(comm)
     , triangulation(comm, Triangulation<dim>::limit_level_difference_at_vertices)
     , dof_handler(triangulation)
@@ -29,7 +31,10 @@ namespace Signorini
         material_objects.push_back(body.material);
         materials[body.material_id] = body.material.get();
       }
-    build_scene_mesh(p.mesh, geometries, material_ids, triangulation);
+    build_scene_mesh(p.mesh, geometries, material_ids, triangulation,
+                     !mesh_file.empty());
+    if (!mesh_file.empty())
+      triangulation.load(mesh_file);
 
     // Every cell must belong to a body, and every body must have cells.
     std::set<types::material_id> mesh_material_ids;
@@ -69,6 +74,36 @@ namespace Signorini
   }
 
   template <int dim>
+  void
+  Scene<dim>::save(const std::string &mesh_file,
+                   const VectorType  &saved_solution,
+                   const VectorType  &pattern) const
+  {
+    VectorType a(locally_owned, locally_relevant, comm);
+    VectorType b(locally_owned, locally_relevant, comm);
+    a = saved_solution;
+    b = pattern;
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
+    transfer.prepare_for_serialization(std::vector<const VectorType *>{&a, &b});
+    triangulation.save(mesh_file);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::load_vectors()
+  {
+    VectorType a(locally_owned, comm), b(locally_owned, comm);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
+    std::vector<VectorType *> vectors{&a, &b};
+    transfer.deserialize(vectors);
+    solution         = a;
+    solution_ghosted = solution;
+    VectorType pattern(locally_owned, locally_relevant, comm);
+    pattern = b;
+    build_matrix(pattern);
+  }
+
+  template <int dim>
   double
   Scene<dim>::max_young_modulus() const
   {
@@ -95,6 +130,7 @@ namespace Signorini
 
     solution.reinit(locally_owned, comm);
     solution_ghosted.reinit(locally_owned, locally_relevant, comm);
+    pattern_state.reinit(locally_owned, locally_relevant, comm);
     rhs.reinit(locally_owned, comm);
     if (contact)
       contact->setup(hanging_constraints, homogeneous_constraints);
@@ -119,6 +155,8 @@ namespace Signorini
   void
   Scene<dim>::build_matrix(const VectorType &u)
   {
+    if (&u != &pattern_state)
+      pattern_state = u;
     // Contact couplings may reach DoFs owned by other ranks: their rows
     // must be writable here.
     IndexSet writable = locally_relevant;

@@ -1,3 +1,5 @@
+#include <signorini/archive_io.h>
+#include <signorini/interruption.h>
 #include <signorini/input_error.h>
 #include <signorini/solvers/ipopt_solver.h>
 
@@ -420,7 +422,8 @@ namespace Signorini
                           Ipopt::IpoptCalculatedQuantities *) override
     {
       // A rebuilt sparsity pattern: stop here, solve() restarts Ipopt.
-      if (s.pattern_stale)
+      // A signal: stop here, solve() ends the step.
+      if (s.pattern_stale || Interruption::received() != 0)
         return false;
       // Ipopt's own state gone non-finite (e.g. with constraint values of
       // 1e300 its barrier parameter became NaN, and the next
@@ -806,6 +809,7 @@ namespace Signorini
         status = app->OptimizeTNLP(problem);
         if (IsValid(app->Statistics()))
           result.iterations += app->Statistics()->IterationCount();
+        Interruption::throw_if_requested(u.get_mpi_communicator());
         // Stopped for a new sparsity pattern: go on from the last iterate
         // (finalize_solution() left it in u), with a bound on restarts.
         if (!(status == Ipopt::User_Requested_Stop && pattern_stale && attempt < 20))
@@ -838,6 +842,20 @@ namespace Signorini
             result.derivative_test_errors = std::stoi(match[1]);
       }
     return result;
+  }
+
+  template <int dim>
+  void
+  IpoptSolver<dim>::save_state(OutputArchive &archive) const
+  {
+    archive << warm << last_lambda;
+  }
+
+  template <int dim>
+  void
+  IpoptSolver<dim>::load_state(InputArchive &archive)
+  {
+    archive >> warm >> last_lambda;
   }
 
   template class IpoptSolver<2>;

@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/solvers/ipopt_step.h>
 
 #include <algorithm>
@@ -66,6 +67,22 @@ namespace Signorini
         q.value = derivative_test_errors;
         quantities.push_back(q);
       }
+  }
+
+  template <int dim>
+  void
+  IpoptStep<dim>::save_state(OutputArchive &archive) const
+  {
+    archive << derivative_test_errors;
+    ipopt->save_state(archive);
+  }
+
+  template <int dim>
+  void
+  IpoptStep<dim>::load_state(InputArchive &archive)
+  {
+    archive >> derivative_test_errors;
+    ipopt->load_state(archive);
   }
 
   template class IpoptStep<2>;

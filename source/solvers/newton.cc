@@ -1,3 +1,4 @@
+#include <signorini/interruption.h>
 #include <signorini/solvers/newton.h>
 
 #include <iomanip>
@@ -236,6 +237,8 @@ namespace Signorini
     double last_decrease = std::numeric_limits<double>::infinity();
     for (unsigned int it = 0;; ++it)
       {
+        // A safe point for a clean stop (collective, like the iteration).
+        Interruption::throw_if_requested(u.get_mpi_communicator());
         const double residual = rhs.l2_norm();
         const double tolerance =
           std::max(parameters.residual_tolerance * e.force_scale,

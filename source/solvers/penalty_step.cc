@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/solvers/penalty_step.h>
 
 #include <algorithm>
@@ -148,6 +149,24 @@ namespace Signorini
     c["final penalty"]             = last_mu;
     c["penetration tolerance"]     = this->parameters.solver.penalty.penetration_tolerance;
     c["penetration tolerance met"] = tolerance_met;
+  }
+
+  template <int dim>
+  void
+  PenaltyStep<dim>::save_state(OutputArchive &archive) const
+  {
+    archive << initial_mu0 << last_mu << tolerance_met;
+    if (ipopt)
+      ipopt->save_state(archive);
+  }
+
+  template <int dim>
+  void
+  PenaltyStep<dim>::load_state(InputArchive &archive)
+  {
+    archive >> initial_mu0 >> last_mu >> tolerance_met;
+    if (ipopt)
+      ipopt->load_state(archive);
   }
 
   template class PenaltyStep<2>;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/archive.h>
 #include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/penalty.h>
 #include <signorini/output/json.h>
@@ -237,6 +238,17 @@ namespace Signorini
       /// The model's part of summary.json's "contact" block.
       virtual void
       write_summary(Json &block) const = 0;
+
+      /**
+       * Save what the model carries from one load step to the next (this
+       * rank's part) into a checkpoint: the nodal forces, and what a
+       * model adds. load_state() reads it back after the DoFs of the
+       * checkpoint's mesh are set up.
+       */
+      virtual void
+      save_state(OutputArchive &archive) const;
+      virtual void
+      load_state(InputArchive &archive);
 
     protected:
       /// The block's entries every model has: type, boundary id, what the

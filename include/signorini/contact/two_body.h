@@ -194,6 +194,12 @@ namespace Signorini
       void
       write_summary(Json &block) const override;
 
+      /// The forces and the broad phase's statistics.
+      void
+      save_state(OutputArchive &archive) const override;
+      void
+      load_state(InputArchive &archive) override;
+
       /// Rows beyond the locally relevant ones that this rank's pairs may
       /// write to: the sparsity pattern's extra writable rows.
       const IndexSet &

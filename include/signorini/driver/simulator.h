@@ -1,6 +1,7 @@
 #pragma once
 
 #include <signorini/output/report.h>
+#include <signorini/output/summary.h>
 #include <signorini/parameters/scene_parameters.h>
 #include <signorini/output/postprocess.h>
 #include <signorini/problem/problem.h>
@@ -38,18 +39,24 @@ namespace Signorini
     /**
      * Parse the scene from @p prm (already read from @p parameter_file),
      * build the mesh and check the input. Throws InputError on bad input,
-     * before anything is written.
+     * before anything is written. With @p restart_checkpoint (a checkpoint
+     * folder, whose parameters the caller has checked against @p prm),
+     * the mesh, the solution and the state of every part are those of
+     * the checkpoint, and run() continues from there.
      */
     Simulator(ParameterHandler  &prm,
               const std::string &parameter_file,
               const bool         quiet,
-              MPI_Comm           comm);
+              MPI_Comm           comm,
+              const std::string &restart_checkpoint = "");
 
     /**
      * Create the output folder, write used_parameters.prm, solve every
      * load step and write the output. Returns the report; its status is
-     * "converged" or "failed" (then reason says why, the output of the
-     * last converged step is on disk and summary.json says so).
+     * "converged", "failed" (then reason says why, the output of the
+     * last converged step is on disk and summary.json says so) or
+     * "interrupted" (SIGINT or SIGTERM: a checkpoint of the last
+     * converged step is on disk, see Interruption).
      */
     const Report &
     run(ParameterHandler &prm);
@@ -69,18 +76,54 @@ namespace Signorini
                   Report::Step                      &record,
                   const std::string                 &series);
 
-    /// Solve the load path; throws SolveFailure when a step cannot be cut
-    /// further. Returns the number of load steps.
-    unsigned int
-    load_path();
-
-    /// The final load again on adaptively refined meshes.
+    /// Solve the load path from the current time; throws SolveFailure
+    /// when a step cannot be cut further.
     void
-    refinement_cycles(unsigned int step, const Timer &run_timer);
+    load_path(const Timer &run_timer);
 
-    /// Wall time of every phase so far, the largest over the ranks.
+    /// The final load again on adaptively refined meshes, from the
+    /// current cycle.
+    void
+    refinement_cycles(const Timer &run_timer);
+
+    /// Wall time of every phase so far, the largest over the ranks,
+    /// including the runs this one was restarted from.
     std::map<std::string, double>
     phase_times() const;
+
+    /// Wall time since the start of the run (and of the runs it was
+    /// restarted from), the largest over the ranks.
+    double
+    elapsed(const Timer &run_timer) const;
+
+    /// Record the current state as the one a checkpoint saves (after
+    /// every converged step and every new mesh).
+    void
+    snapshot();
+
+    /// Write a checkpoint of the last snapshot if one is due (or always,
+    /// with @p force); collective.
+    void
+    checkpoint(const Timer &run_timer, const bool force);
+
+    /// Continue from the checkpoint in @p folder (after setup_dofs()).
+    void
+    restore(const std::string &folder);
+
+    /// The state of a run that a checkpoint keeps.
+    struct ResumePoint
+    {
+      double       time = 0., dt = 0.;
+      unsigned int step = 0;
+      bool         mesh_ready = false;   // a refined mesh, not yet solved
+      bool         mesh_as_built = true; // no refinement cycle yet
+      unsigned int refined_cells = 0;    // flagged to make that mesh
+      Report       report;
+      VectorType   solution;             // locally owned
+      VectorType   pattern;              // locally relevant
+      std::string  parts;                // this rank's model, solver, output
+      std::map<std::string, unsigned long long> file_sizes; // appended files
+    };
 
     MPI_Comm           comm;
     ConditionalOStream pcout;
@@ -96,5 +139,25 @@ namespace Signorini
     std::unique_ptr<Postprocessor<dim>> postprocessor;
     VectorType                          failed_iterate;
     Report                              report;
+    std::unique_ptr<LoadStepTable>      load_steps;
+
+    // Where the run is: load time and step size, converged steps, and in
+    // the refinement cycles whether the current mesh is refined and not
+    // yet solved. Restored from a checkpoint.
+    double       time = 0., dt = 0.;
+    unsigned int step = 0;
+    bool         mesh_ready    = false;
+    bool         mesh_as_built = true;
+    unsigned int refined_cells = 0;
+    std::string  activity = "setup"; // for the message of an interruption
+
+    ResumePoint                   resume;
+    std::string                   restart_folder;
+    std::string                   used_parameters; // ShortPRM text
+    std::map<std::string, double> previous_times; // of the runs before
+    unsigned int                  checkpoint_sequence = 0;
+    unsigned int                  steps_since_checkpoint = 0;
+    double                        last_checkpoint_time   = 0.;
+    bool                          periodic_checkpoints   = false;
   };
 } // namespace Signorini

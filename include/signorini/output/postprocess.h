@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/archive.h>
+
 #include <signorini/problem/energy_functional.h>
 #include <signorini/material/interface.h>
 #include <signorini/types.h>
@@ -42,6 +44,13 @@ namespace Signorini
     within_tolerance() const
     {
       return !has_reference || tolerance <= 0. || relative_error() <= tolerance;
+    }
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &name &value &has_reference &reference &tolerance;
     }
   };
 
@@ -125,6 +134,13 @@ namespace Signorini
 
     /// Called before the patches are built, to add further fields.
     std::function<void(DataOut<dim> &)> extra_fields;
+
+    /// Save and load the series written so far (their .pvd / .xdmf
+    /// records) for checkpoints.
+    void
+    save_state(OutputArchive &archive) const;
+    void
+    load_state(InputArchive &archive);
 
     PostprocessParameters::Verbosity
     verbosity() const

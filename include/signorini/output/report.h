@@ -39,6 +39,16 @@ namespace Signorini
       Tensor<1, 3> contact_force_vector; // on body 1 (or the body)
       bool               has_pairs = false; // the contact has a broad phase
       unsigned long long pairs     = 0;     // pairs it evaluated last
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &time &newton_iterations &backtracks &regularized &linear_iterations;
+        ar &linear_fallbacks &cuts_before &residual &energy &min_J &stages;
+        ar &solver_status &active_nodes &penetration_ratio;
+        ar &contact_force_vector &has_pairs &pairs;
+      }
     };
 
     /// One adaptive refinement cycle: the mesh it solved on and what it
@@ -56,6 +66,14 @@ namespace Signorini
       double                wall_seconds  = 0.;  // since the run started
       std::vector<Quantity> quantities;
       std::map<std::string, double> timing; // per phase, since the start
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &cycle &n_cells &n_dofs &contact_nodes &newton_iterations;
+        ar &refined_cells &h_min &cycle_seconds &wall_seconds &quantities &timing;
+      }
     };
 
     std::string              scene;
@@ -72,8 +90,16 @@ namespace Signorini
     std::string              solver;         // Solver > Method
     std::string              iteration_name = "newton"; // or "ipopt"
     std::string              linear_solver;
+    /// "running", "converged", "failed" or "interrupted".
     std::string              status = "not run";
     std::string              reason;
+    /// With status "interrupted": the signal, and what was running.
+    int                      interrupt_signal = 0;
+    std::string              interrupted_during;
+    /// The checkpoint written last, if any ("" otherwise), and the ones
+    /// this run was restarted from.
+    std::string              last_checkpoint;
+    std::vector<std::string> restarted_from;
     double                   final_time        = 0.;
     unsigned int             step_cuts         = 0;
     unsigned int             newton_iterations = 0;
@@ -83,6 +109,17 @@ namespace Signorini
     unsigned int contact_nodes = 0; // 0: no contact
     std::vector<Quantity>    quantities;
     std::map<std::string, double> timing;
+
+    /// The part of the report that a checkpoint keeps: what the run did
+    /// up to its last converged state (not the mesh data, which the
+    /// restarted run recomputes, nor the status).
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &final_time &step_cuts &newton_iterations &steps &cycles &quantities;
+      ar &timing &restarted_from;
+    }
   };
 
 } // namespace Signorini

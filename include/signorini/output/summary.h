@@ -8,11 +8,11 @@
 namespace Signorini
 {
   /**
-   * Write summary.json, load_steps.csv and (with refinement cycles)
-   * refinement_cycles.csv into the report's output directory (rank 0
-   * writes). The run's own record comes from @p report; the contact
-   * model, the step solver and the incompressibility constraints each
-   * write their own entries.
+   * Write summary.json and (with refinement cycles) refinement_cycles.csv
+   * into the report's output directory (rank 0 writes; each file is
+   * renamed into place once complete). The run's own record comes from
+   * @p report; the contact model, the step solver and the
+   * incompressibility constraints each write their own entries.
    */
   template <int dim>
   void
@@ -22,4 +22,52 @@ namespace Signorini
                 const StepSolver<dim>      &solver,
                 const unsigned int          incompressibility_constraints,
                 MPI_Comm                    comm);
+
+  /**
+   * load_steps.csv, one row per converged load step (and refinement
+   * cycle), appended and flushed as each step converges so that an
+   * interrupted run keeps the rows of its converged steps.
+   */
+  class LoadStepTable
+  {
+  public:
+    /// The file in @p output_directory; only @p writer (rank 0) writes.
+    LoadStepTable(const std::string &output_directory, const bool writer);
+
+    /// Start the file anew with its header (a new run).
+    void
+    start(const std::string &iteration_name, const unsigned int dim);
+
+    /// Append the row of step number @p index (from 1).
+    void
+    append(const unsigned int   index,
+           const Report::Step &step,
+           const unsigned int   dim);
+
+    const std::string &
+    path() const
+    {
+      return file;
+    }
+
+  private:
+    std::string file;
+    bool        writer;
+  };
+
+  /**
+   * progress.json: where a running run is (status, load time and step,
+   * refinement cycle, elapsed and estimated remaining wall time),
+   * replaced after every converged step (rank 0 writes), for scripts and
+   * dashboards.
+   */
+  void
+  write_progress(const std::string &output_directory,
+                 const std::string &status,
+                 const double       time,
+                 const double       end_time,
+                 const unsigned int step,
+                 const unsigned int cycle,
+                 const double       elapsed_seconds,
+                 const double       remaining_seconds);
 } // namespace Signorini

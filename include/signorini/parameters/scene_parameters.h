@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/driver/checkpoint.h>
 #include <signorini/scene/boundary_conditions.h>
 #include <signorini/contact/foundation.h>
 #include <signorini/contact/hertz.h>
@@ -162,6 +163,7 @@ namespace Signorini
       Solver                         solver;
       Contact                        contact;
       PostprocessParameters          postprocess;
+      CheckpointParameters           checkpoint;
 
       static void
       declare_parameters(ParameterHandler &prm);

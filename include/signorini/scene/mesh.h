@@ -88,10 +88,13 @@ namespace Signorini
    * 'Local refinement center' (a contact zone, say); p4est keeps
    * neighbouring levels within one of each other (hanging nodes).
    */
+  /// With @p coarse_only: no refinement (the coarse mesh that a
+  /// checkpoint's refined mesh is loaded into).
   template <int dim>
   void
   build_scene_mesh(const MeshParameters                      &mesh,
                    const std::vector<BodyGeometry>           &bodies,
                    const std::vector<types::material_id>     &material_ids,
-                   parallel::distributed::Triangulation<dim> &tria);
+                   parallel::distributed::Triangulation<dim> &tria,
+                   const bool                                 coarse_only = false);
 } // namespace Signorini

@@ -35,9 +35,31 @@ namespace Signorini
     /**
      * Build the mesh of @p parameters and check it against them (every
      * cell belongs to an active body, every referenced boundary id
-     * exists); InputError on bad input.
+     * exists); InputError on bad input. With a @p mesh_file (a
+     * checkpoint's, written by save()), the coarse mesh of @p parameters
+     * is refined as the saved one instead; call load_vectors() after
+     * setup_dofs().
      */
-    Scene(const Parameters::Scene &parameters, MPI_Comm comm);
+    Scene(const Parameters::Scene &parameters,
+          MPI_Comm                 comm,
+          const std::string       &mesh_file = "");
+
+    /**
+     * Write the mesh with the owned vectors @p solution and @p pattern
+     * (the state the Hessian's sparsity pattern was built at) attached,
+     * into @p mesh_file (collective).
+     */
+    void
+    save(const std::string &mesh_file,
+         const VectorType  &solution,
+         const VectorType  &pattern) const;
+
+    /**
+     * After the constructor from a mesh file and setup_dofs(): the saved
+     * solution and the Hessian's sparsity pattern of the saved state.
+     */
+    void
+    load_vectors();
 
     /**
      * Distribute the DoFs, build the constraints, (re)initialise the state
@@ -93,6 +115,10 @@ namespace Signorini
     VectorType solution;         // locally owned
     VectorType solution_ghosted; // locally relevant
     VectorType rhs;
+    /// The state the Hessian's sparsity pattern was last built at (its
+    /// contact couplings depend on it): what a checkpoint keeps so that
+    /// the restarted run has the same matrix structure.
+    VectorType pattern_state; // locally relevant
 
     unsigned long long n_cells = 0, n_dofs = 0;
     double             h_min = 0., h_max = 0.;

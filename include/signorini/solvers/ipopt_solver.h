@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/archive.h>
+
 #include <signorini/contact/penalty.h>
 #include <signorini/contact/model.h>
 #include <signorini/problem/energy_functional.h>
@@ -151,6 +153,13 @@ namespace Signorini
           const double                     mu = 0.);
 
     class Problem;
+
+    /// Save and load the warm-start data (whether to warm-start, the
+    /// last multipliers) for checkpoints; load after setup().
+    void
+    save_state(OutputArchive &archive) const;
+    void
+    load_state(InputArchive &archive);
 
   private:
     friend class Problem;

@@ -39,6 +39,12 @@ namespace Signorini
     void
     add_quantities(std::vector<Quantity> &quantities) const override;
 
+    /// Ipopt's warm-start data and the derivative test's result.
+    void
+    save_state(OutputArchive &archive) const override;
+    void
+    load_state(InputArchive &archive) override;
+
   private:
     std::unique_ptr<IpoptSolver<dim>> ipopt;
     int                               derivative_test_errors = -1;

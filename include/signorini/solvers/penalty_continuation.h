@@ -55,6 +55,13 @@ namespace Signorini
     // false: the stage's solver failed and the stage was tried again
     // from the previous stage's solution with a smaller jump in mu.
     bool converged = true;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &mu &newton_iterations &penetration_ratio &converged;
+    }
   };
 
   struct ContinuationResult

@@ -46,6 +46,13 @@ namespace Signorini
     void
     write_contact_summary(Json &block) const override;
 
+    /// The first mesh's and the last step's penalty, whether the
+    /// tolerance was met, and Ipopt's warm-start data.
+    void
+    save_state(OutputArchive &archive) const override;
+    void
+    load_state(InputArchive &archive) override;
+
   private:
     /// Re-initialise the Hessian with the contact couplings at @p u.
     void

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/archive.h>
 #include <signorini/output/json.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/solvers/newton.h>
@@ -87,6 +88,23 @@ namespace Signorini
     add_quantities(std::vector<Quantity> &quantities) const
     {
       (void)quantities;
+    }
+
+    /**
+     * Save what the solver carries from one load step to the next (the
+     * penalty of the last step, Ipopt's multipliers for its warm start)
+     * into a checkpoint; load_state() reads it back after setup() on the
+     * checkpoint's mesh. Nothing by default.
+     */
+    virtual void
+    save_state(OutputArchive &archive) const
+    {
+      (void)archive;
+    }
+    virtual void
+    load_state(InputArchive &archive)
+    {
+      (void)archive;
     }
 
   protected:

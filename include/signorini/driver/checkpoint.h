@@ -1,0 +1,125 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace Signorini
+{
+  using namespace dealii;
+
+  /**
+   * The "Checkpoint" subsection: when a run saves its state so that
+   * `signorini --restart DIR` can continue it (doc/robustness.md).
+   *
+   * A checkpoint is the folder DIR/checkpoints/checkpoint-NNNNNN with the
+   * mesh and the solution (p4est's save, mesh*), each rank's state
+   * (state-R.bin: load-step time and size, the report so far, the contact
+   * model's forces, the step solver's penalty or Ipopt multipliers, the
+   * output series) and the parameters it ran with (parameters.prm). It is
+   * written under a temporary name and renamed when complete; the newest
+   * 'Keep' checkpoints are kept. A checkpoint is always written when the
+   * run is interrupted by SIGINT or SIGTERM, whatever these settings say.
+   */
+  struct CheckpointParameters
+  {
+    enum class Mode
+    {
+      automatic,
+      on,
+      off
+    };
+    Mode               mode            = Mode::automatic;
+    unsigned int       every_steps     = 10;
+    double             every_minutes   = 10.;
+    unsigned int       automatic_steps = 50;
+    unsigned long long automatic_dofs  = 200000;
+    unsigned int       keep            = 2;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether periodic checkpoints are written for a run of @p n_steps
+    /// load steps and @p n_dofs DoFs.
+    bool
+    enabled(const unsigned int n_steps, const unsigned long long n_dofs) const;
+  };
+
+  namespace Checkpoint
+  {
+    /// Version of the checkpoint format (state files and their order).
+    constexpr unsigned int format_version = 1;
+
+    /// What every state file starts with; read before anything is built.
+    struct Header
+    {
+      unsigned int format     = format_version;
+      unsigned int dimension  = 0;
+      unsigned int n_ranks    = 0;
+      unsigned int sequence   = 0; // the NNNNNN of the folder
+      std::string  parameter_file; // as the original run named it
+      std::string  parameters;     // the used parameters (ShortPRM text)
+      /// The mesh is the one the parameters build (no refinement cycle
+      /// yet): the restarted run builds it the same way, which gives the
+      /// same cells in the same order, hence the same DoF numbering and
+      /// the same round-off; the vectors are then restored entry by entry.
+      /// Otherwise the mesh is loaded from the checkpoint (p4est) and the
+      /// vectors are transferred cell by cell.
+      bool mesh_as_built = true;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &format &dimension &n_ranks &sequence &parameter_file &parameters;
+        ar &mesh_as_built;
+      }
+    };
+
+    /// DIR/checkpoints.
+    std::string
+    root(const std::string &output_directory);
+
+    /// The folder of checkpoint @p sequence in @p output_directory.
+    std::string
+    folder(const std::string &output_directory, const unsigned int sequence);
+
+    /// This rank's state file in @p checkpoint_folder.
+    std::string
+    state_file(const std::string &checkpoint_folder, const unsigned int rank);
+
+    /// The mesh file (p4est) in @p checkpoint_folder.
+    std::string
+    mesh_file(const std::string &checkpoint_folder);
+
+    /// The complete checkpoints in @p output_directory, oldest first.
+    std::vector<std::string>
+    list(const std::string &output_directory);
+
+    /**
+     * The newest complete checkpoint of the run in @p directory, which is
+     * the run's output directory or one checkpoint folder. Throws
+     * InputError (naming --restart) if there is none.
+     */
+    std::string
+    newest(const std::string &directory);
+
+    /// Read the header of @p checkpoint_folder's first state file;
+    /// InputError if it is missing or not a checkpoint of this version.
+    Header
+    read_header(const std::string &checkpoint_folder);
+
+    /**
+     * The entries of @p restarted that differ from those of the text
+     * @p saved (ShortPRM, as in Header::parameters) and that a restart
+     * cannot honour: every entry except Load stepping > End time, Mesh
+     * refinement > Number of cycles, Output directory and the Output and
+     * Checkpoint subsections. Each as "Section > Entry: 'old' -> 'new'".
+     */
+    std::vector<std::string>
+    incompatible_changes(const std::string &saved, const ParameterHandler &restarted);
+  } // namespace Checkpoint
+} // namespace Signorini

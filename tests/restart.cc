@@ -1,0 +1,185 @@
+// Checkpoint and restart (doc/robustness.md): a run restarted from any of
+// its checkpoints ends with the same summary.json numbers (wall times and
+// peak memory excepted) to 1e-10 relative, the same load steps and
+// iterations, and the same load_steps.csv rows, as the run that was never
+// stopped:
+// - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks;
+// - Ipopt with the rigid foundation's constraints (warm-started multipliers);
+// - adaptive refinement cycles, restarted in the load path and in a cycle.
+// Writing checkpoints does not change the run. Bad restarts exit 2 with a
+// message: a changed mesh entry, another number of ranks, no checkpoint.
+
+#include "run_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+using RunOutput::summary_numbers;
+using RunOutput::verdict;
+
+namespace
+{
+  const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
+
+  /// summary.json numbers without wall times.
+  std::vector<std::pair<std::string, double>>
+  numbers(const std::string &folder)
+  {
+    auto all = summary_numbers(folder + "/summary.json");
+    all.erase(std::remove_if(all.begin(), all.end(),
+                             [](const auto &e) {
+                               return e.first.find("wall time") != std::string::npos;
+                             }),
+              all.end());
+    return all;
+  }
+
+  /// Whether two runs wrote the same numbers (to @p tolerance relative)
+  /// to summary.json and load_steps.csv; the first difference goes to
+  /// stderr.
+  bool
+  same(const std::string &a, const std::string &b, const double tolerance = 1e-10)
+  {
+    const auto x = numbers(a), y = numbers(b);
+    if (x.size() < 20 || x.size() != y.size())
+      {
+        std::cerr << a << " vs " << b << ": " << x.size() << " and " << y.size()
+                  << " numbers\n";
+        return false;
+      }
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (x[i].first != y[i].first ||
+          std::abs(x[i].second - y[i].second) >
+            tolerance * std::max(std::abs(x[i].second), std::abs(y[i].second)))
+        {
+          std::cerr << a << " vs " << b << ": " << x[i].first << " "
+                    << x[i].second << " vs " << y[i].first << " " << y[i].second
+                    << "\n";
+          return false;
+        }
+    const auto r = RunOutput::read_csv(a + "/load_steps.csv");
+    const auto s = RunOutput::read_csv(b + "/load_steps.csv");
+    if (r.empty() || r.size() != s.size())
+      {
+        std::cerr << a << " vs " << b << ": load_steps.csv has " << r.size()
+                  << " and " << s.size() << " rows\n";
+        return false;
+      }
+    for (std::size_t i = 0; i < r.size(); ++i)
+      for (const auto &[key, value] : r[i])
+        if (std::abs(value - s[i].at(key)) >
+            tolerance * std::max(std::abs(value), std::abs(s[i].at(key))))
+          {
+            std::cerr << a << " vs " << b << ": load_steps.csv row " << i + 1
+                      << " " << key << "\n";
+            return false;
+          }
+    return true;
+  }
+
+  std::string
+  checkpoint(const std::string &folder, const unsigned int n)
+  {
+    char name[32];
+    std::snprintf(name, sizeof(name), "checkpoint-%06u", n);
+    return folder + "/checkpoints/" + name;
+  }
+
+  int
+  restart(const std::string &what, const std::string &launcher = "")
+  {
+    return RunOutput::execute(launcher + SIGNORINI_EXECUTABLE + " --restart " +
+                              what + " > /dev/null 2>&1")
+      .first;
+  }
+
+  /**
+   * Run @p scene with @p edits without checkpoints, and again with one
+   * after every converged step; restart a copy of the second run from
+   * each of @p from (checkpoint numbers) and compare every run with the
+   * first.
+   */
+  void
+  check_scene(std::ostream                    &out,
+              const std::string               &name,
+              const std::string               &scene,
+              const std::string               &edits,
+              const std::vector<unsigned int> &from,
+              const std::string               &launcher = "")
+  {
+    const std::string every =
+      "subsection Checkpoint\n  set Write checkpoints = true\n"
+      "  set Every load steps = 1\n  set Keep = 100\nend\n";
+    const bool ran =
+      RunOutput::run_scene(name + "_plain", scene, edits, launcher) == 0 &&
+      RunOutput::run_scene(name, scene, edits + every, launcher) == 0;
+    out << name << ": runs converged: " << verdict(ran)
+        << "; checkpoints change nothing: "
+        << verdict(ran && same(name + "_plain", name)) << "\n";
+    for (const unsigned int n : from)
+      {
+        const std::string copy = name + "_from_" + std::to_string(n);
+        std::filesystem::remove_all(copy);
+        std::filesystem::copy(name, copy, std::filesystem::copy_options::recursive);
+        const bool exists = std::filesystem::exists(checkpoint(copy, n));
+        const int  code   = restart(checkpoint(copy, n), launcher);
+        out << name << ": restarted from checkpoint " << n
+            << ": exit code " << code << ", same numbers as without a stop: "
+            << verdict(exists && code == 0 && same(name + "_plain", copy)) << "\n";
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  const std::string four_steps =
+    "subsection Load stepping\n  set Number of steps = 4\nend\n";
+
+  // Penalty continuation with two deformable bodies (checkpoint n: after
+  // load step n + 1).
+  check_scene(out, "block", "hertz_block.prm", four_steps, {0, 2});
+  // Ipopt with constraints, its multipliers warm-started across steps.
+  check_scene(out, "ipopt", "default.prm",
+              four_steps +
+                "subsection Mesh\n  set Global refinements = 2\nend\n"
+                "subsection Solver\n  set Method = ipopt\nend\n",
+              {1, 3});
+  // Refinement cycles: checkpoints in the load path (0: after step 1),
+  // after cycle 0 is recorded (2), on cycle 1's mesh before its solve (3)
+  // and after it (4).
+  check_scene(out, "cycles", "hertz_adaptive.prm",
+              "subsection Mesh\n  set Global refinements = 2\nend\n"
+              "subsection Mesh refinement\n  set Number of cycles = 2\nend\n",
+              {0, 2, 3, 4});
+  // Two ranks.
+  check_scene(out, "ranks", "hertz_block.prm", four_steps, {2}, mpirun);
+
+  // A restart that cannot be honoured.
+  {
+    std::ofstream("changed.prm")
+      << "include " << SIGNORINI_SOURCE_DIR << "/prm/hertz_block.prm\n"
+      << four_steps << "subsection Mesh\n  set Global refinements = 3\nend\n";
+    const auto changed = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                            " --restart block changed.prm 2>&1");
+    out << "changed mesh: exit code " << changed.first << ", names the entry: "
+        << verdict(changed.second.find("Mesh > Global refinements: '2' -> '3'") !=
+                   std::string::npos)
+        << "\n";
+    const auto ranks = RunOutput::execute(mpirun + SIGNORINI_EXECUTABLE +
+                                          " --restart block 2>&1");
+    out << "other rank count: exit code " << ranks.first << ", says so: "
+        << verdict(ranks.second.find("restart it with as many") != std::string::npos)
+        << "\n";
+    std::filesystem::create_directories("empty");
+    const auto none = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                         " --restart empty 2>&1");
+    out << "no checkpoint: exit code " << none.first << ", says so: "
+        << verdict(none.second.find("no checkpoint") != std::string::npos) << "\n";
+  }
+}
