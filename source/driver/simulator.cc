@@ -706,8 +706,11 @@ namespace Signorini
                         " received during " + during +
                         "; the last converged step (t = " +
                         std::to_string(report.final_time) +
-                        ") is on disk; continue with: signorini --restart " +
-                        output_directory;
+                        ") is on disk; continue with: " +
+                        (report.n_ranks > 1 ?
+                           "mpirun -np " + std::to_string(report.n_ranks) + " " :
+                           std::string()) +
+                        "signorini --restart " + output_directory;
         pcout << "Run interrupted: " << report.reason << std::endl;
       }
 
