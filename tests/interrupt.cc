@@ -36,35 +36,10 @@ namespace
   const std::string scene_edits =
     "subsection Load stepping\n  set Number of steps = 4\nend\n";
 
-  std::vector<std::pair<std::string, double>>
-  numbers(const std::string &folder)
-  {
-    auto all = RunOutput::summary_numbers(folder + "/summary.json");
-    all.erase(std::remove_if(all.begin(), all.end(),
-                             [](const auto &e) {
-                               return e.first.find("wall time") != std::string::npos;
-                             }),
-              all.end());
-    return all;
-  }
-
   bool
   same(const std::string &a, const std::string &b)
   {
-    const auto x = numbers(a), y = numbers(b);
-    if (x.size() < 20 || x.size() != y.size())
-      return false;
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (x[i].first != y[i].first ||
-          std::abs(x[i].second - y[i].second) >
-            1e-10 * std::max(std::abs(x[i].second), std::abs(y[i].second)))
-        {
-          std::cerr << a << " vs " << b << ": " << x[i].first << "\n";
-          return false;
-        }
-    return RunOutput::read_text(a + "/load_steps.csv").size() > 0 &&
-           RunOutput::read_csv(a + "/load_steps.csv").size() ==
-             RunOutput::read_csv(b + "/load_steps.csv").size();
+    return RunOutput::same_results(a, b, 1e-10);
   }
 
   /// Status of a summary.json read by Python's JSON parser ("" if the
@@ -165,7 +140,8 @@ namespace
     const int  code   = wait_for(pid);
     const auto status = json_status(name + "/summary.json");
     const auto rows   = whole_rows(name + "/load_steps.csv");
-    const auto steps  = RunOutput::first_number(numbers(name), "load steps");
+    const auto steps =
+      RunOutput::first_number(RunOutput::result_numbers(name), "load steps");
 
     if (second_signal)
       {

@@ -18,67 +18,16 @@
 #include <iostream>
 #include <string>
 
-using RunOutput::summary_numbers;
 using RunOutput::verdict;
 
 namespace
 {
   const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
 
-  /// summary.json numbers without wall times.
-  std::vector<std::pair<std::string, double>>
-  numbers(const std::string &folder)
-  {
-    auto all = summary_numbers(folder + "/summary.json");
-    all.erase(std::remove_if(all.begin(), all.end(),
-                             [](const auto &e) {
-                               return e.first.find("wall time") != std::string::npos;
-                             }),
-              all.end());
-    return all;
-  }
-
-  /// Whether two runs wrote the same numbers (to @p tolerance relative)
-  /// to summary.json and load_steps.csv; the first difference goes to
-  /// stderr.
   bool
-  same(const std::string &a, const std::string &b, const double tolerance = 1e-10)
+  same(const std::string &a, const std::string &b)
   {
-    const auto x = numbers(a), y = numbers(b);
-    if (x.size() < 20 || x.size() != y.size())
-      {
-        std::cerr << a << " vs " << b << ": " << x.size() << " and " << y.size()
-                  << " numbers\n";
-        return false;
-      }
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (x[i].first != y[i].first ||
-          std::abs(x[i].second - y[i].second) >
-            tolerance * std::max(std::abs(x[i].second), std::abs(y[i].second)))
-        {
-          std::cerr << a << " vs " << b << ": " << x[i].first << " "
-                    << x[i].second << " vs " << y[i].first << " " << y[i].second
-                    << "\n";
-          return false;
-        }
-    const auto r = RunOutput::read_csv(a + "/load_steps.csv");
-    const auto s = RunOutput::read_csv(b + "/load_steps.csv");
-    if (r.empty() || r.size() != s.size())
-      {
-        std::cerr << a << " vs " << b << ": load_steps.csv has " << r.size()
-                  << " and " << s.size() << " rows\n";
-        return false;
-      }
-    for (std::size_t i = 0; i < r.size(); ++i)
-      for (const auto &[key, value] : r[i])
-        if (std::abs(value - s[i].at(key)) >
-            tolerance * std::max(std::abs(value), std::abs(s[i].at(key))))
-          {
-            std::cerr << a << " vs " << b << ": load_steps.csv row " << i + 1
-                      << " " << key << "\n";
-            return false;
-          }
-    return true;
+    return RunOutput::same_results(a, b, 1e-10);
   }
 
   std::string

@@ -2,7 +2,10 @@
 // whole scenes and check numbers computed from the output files.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -105,6 +108,63 @@ namespace RunOutput
           i = end - text.c_str() - 1;
         }
     return numbers;
+  }
+
+  /// summary_numbers() without any wall time (also those of the
+  /// refinement cycles): what two runs of one scene must agree on.
+  inline std::vector<std::pair<std::string, double>>
+  result_numbers(const std::string &folder)
+  {
+    auto all = summary_numbers(folder + "/summary.json");
+    std::vector<std::pair<std::string, double>> kept;
+    for (const auto &e : all)
+      if (e.first.find("wall time") == std::string::npos)
+        kept.push_back(e);
+    return kept;
+  }
+
+  /**
+   * Whether the runs in folders @p a and @p b wrote the same numbers (to
+   * @p tolerance relative) to summary.json (result_numbers()) and
+   * load_steps.csv; the first difference goes to stderr.
+   */
+  inline bool
+  same_results(const std::string &a, const std::string &b, const double tolerance)
+  {
+    auto differ = [tolerance](const double x, const double y) {
+      return std::abs(x - y) > tolerance * std::max(std::abs(x), std::abs(y));
+    };
+    const auto x = result_numbers(a), y = result_numbers(b);
+    if (x.size() < 20 || x.size() != y.size())
+      {
+        std::cerr << a << " vs " << b << ": " << x.size() << " and " << y.size()
+                  << " numbers in summary.json\n";
+        return false;
+      }
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (x[i].first != y[i].first || differ(x[i].second, y[i].second))
+        {
+          std::cerr << a << " vs " << b << ": " << x[i].first << " "
+                    << x[i].second << " vs " << y[i].second << "\n";
+          return false;
+        }
+    const auto r = read_csv(a + "/load_steps.csv");
+    const auto s = read_csv(b + "/load_steps.csv");
+    if (r.empty() || r.size() != s.size())
+      {
+        std::cerr << a << " vs " << b << ": load_steps.csv has " << r.size()
+                  << " and " << s.size() << " rows\n";
+        return false;
+      }
+    for (std::size_t i = 0; i < r.size(); ++i)
+      for (const auto &[key, value] : r[i])
+        if (s[i].count(key) == 0 || differ(value, s[i].at(key)))
+          {
+            std::cerr << a << " vs " << b << ": load_steps.csv row " << i + 1
+                      << " " << key << "\n";
+            return false;
+          }
+    return true;
   }
 
   /// The first number stored under @p key in @p numbers (from

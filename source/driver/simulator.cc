@@ -556,13 +556,7 @@ namespace Signorini
       scene->load_vectors();
     mesh_as_built = header.mesh_as_built;
 
-    report.final_time        = saved.final_time;
-    report.step_cuts         = saved.step_cuts;
-    report.newton_iterations = saved.newton_iterations;
-    report.steps             = saved.steps;
-    report.cycles            = saved.cycles;
-    report.quantities        = saved.quantities;
-    report.restarted_from    = saved.restarted_from;
+    report.take_record(saved);
     report.restarted_from.push_back(folder);
     previous_times = saved.timing;
     if (!report.cycles.empty() &&

@@ -120,6 +120,20 @@ namespace Signorini
       ar &final_time &step_cuts &newton_iterations &steps &cycles &quantities;
       ar &timing &restarted_from;
     }
+
+    /// Take from @p saved the part that serialize() keeps (a restart).
+    void
+    take_record(const Report &saved)
+    {
+      final_time        = saved.final_time;
+      step_cuts         = saved.step_cuts;
+      newton_iterations = saved.newton_iterations;
+      steps             = saved.steps;
+      cycles            = saved.cycles;
+      quantities        = saved.quantities;
+      timing            = saved.timing;
+      restarted_from    = saved.restarted_from;
+    }
   };
 
 } // namespace Signorini
