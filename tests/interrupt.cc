@@ -7,8 +7,9 @@
 // checkpoint from which --restart ends with the numbers of the run that
 // was never stopped (every summary.json number and load_steps.csv row to
 // 1e-10 relative). Also on 2 ranks (the signal goes to mpirun, which
-// passes it on), and with a second signal, which ends the process at once
-// and still leaves well-formed files.
+// passes it on; its kill timeout is raised, see doc/robustness.md), and
+// with a second signal, which ends the process at once and still leaves
+// well-formed files.
 
 #include "run_output.h"
 
@@ -107,7 +108,11 @@ namespace
   {
     std::vector<std::string> c;
     if (two_ranks)
-      c = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"};
+      // mpirun passes SIGTERM on to the ranks and kills them after
+      // odls_base_sigkill_timeout seconds (default 1): give them time to
+      // reach the next safe point and write the checkpoint.
+      c = {"mpirun", "--allow-run-as-root", "--oversubscribe",
+           "--mca",  "odls_base_sigkill_timeout", "600", "-np", "2"};
     c.push_back(SIGNORINI_EXECUTABLE);
     c.push_back(name + ".prm");
     return c;
