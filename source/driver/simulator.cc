@@ -355,9 +355,10 @@ namespace Signorini
                      Utilities::MPI::max(cycle_timer.wall_time(), comm));
         snapshot();
         checkpoint(run_timer, false);
+        const double spent = elapsed(run_timer); // collective
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           write_progress(report.output_directory, "running", time, end_time,
-                         step, cycle, elapsed(run_timer), 0.);
+                         step, cycle, spent, 0.);
       }
   }
 
