@@ -5,7 +5,9 @@
 // issue's list (E <= 0, nu >= 0.5 with a compressible law, C10 + C01 <= 0,
 // Gent J_m <= 0, zero or negative load steps, a missing/empty/corrupt Gmsh
 // file, a contact boundary id absent from the mesh, two bodies overlapping
-// at the start, an unknown Ipopt option) and benchmarks.md 5 (missing or unreadable files,
+// at the start, an unknown Ipopt option; for the 3D shapes a radius <= 0,
+// a ball part with a wrong count of centre coordinates, a 3D die whose sag
+// exceeds its height) and benchmarks.md 5 (missing or unreadable files,
 // unknown keys, values out of range, a mesh file with no contact boundary,
 // contradictory boundary conditions).
 
@@ -234,6 +236,35 @@ main()
            replace(scene({}), "set Subdivisions = 2, 2",
                    "set Subdivisions = 100000, 100000"),
            out);
+  // The 3D shapes (issue 18): radius <= 0, a ball part with two centre
+  // coordinates, a 3D die whose sag exceeds its height, a cylinder of
+  // length 0, and shapes of the other dimension.
+  auto shape_3d = [&](const std::string &geometry) {
+    return replace(replace(scene({}), "set Dimension = 2", "set Dimension = 3"),
+                   "set Subdivisions = 2, 2", geometry);
+  };
+  run_case("ball_zero_radius",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    set Radius = 0"),
+           out);
+  run_case("hemisphere_negative_radius",
+           shape_3d("set Shape = hemisphere\n    set Center = 0, 0, 1\n"
+                    "    set Radius = -1"),
+           out);
+  run_case("ball_center_two_coordinates",
+           shape_3d("set Shape = quarter ball\n    set Center = 0, 1"), out);
+  run_case("die_3d_sag_above_height",
+           shape_3d("set Shape = die\n    set Lower corner = 0, 0, 0\n"
+                    "    set Upper corner = 2, 1, 0.5\n    set Subdivisions = 2, 1, 1\n"
+                    "    set Arc sag = 0.6"),
+           out);
+  run_case("cylinder_zero_length",
+           shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
+                    "    set Length = 0"),
+           out);
+  run_case("ball_part_in_2d",
+           replace(scene({}), "set Subdivisions = 2, 2", "set Shape = octant ball"), out);
+  run_case("quarter_disk_in_3d", shape_3d("set Shape = quarter disk"), out);
   run_case("huge_global_refinements",
            scene({{"@MESH@", "set Global refinements = 20"}}), out);
   run_case("contact_psi_does_not_parse",
@@ -246,6 +277,14 @@ main()
            out);
   run_case("contact_with_plain_newton",
            with_contact("3", "set Shape = plane", "newton"), out);
+  auto with_hertz = [&](const std::string &lines) {
+    return replace(with_contact("3", "set Shape = plane", "newton-penalty"),
+                   "  subsection Foundation",
+                   "  subsection Hertz reference\n" + lines + "  end\n  subsection Foundation");
+  };
+  run_case("hertz_point_load_in_2d", with_hertz("    set Point load = 1\n"), out);
+  run_case("hertz_line_and_point_load",
+           with_hertz("    set Line load = 1\n    set Point load = 1\n"), out);
   run_case("penalty_without_contact",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = newton-penalty\nend"}}),
            out);

@@ -2,6 +2,13 @@
 // of the quarter and half disks after refinement, which checks the curved
 // manifolds and the boundary ids documented in mesh.h; and a two-body scene
 // whose bodies touch at one point: their vertices must stay separate.
+// In 3D the same for the ball parts (octant, quarter, hemisphere), the
+// quarter and half cylinders and the die: volume and the area of each
+// boundary id against the exact values (computed with a degree 3 mapping,
+// which follows the manifolds), the vertices of the curved surface on the
+// sphere or cylinder to round-off after refinement (and those of each
+// plane on it), the lowest point of a ball a vertex, a two-body 3D scene,
+// and a small hexahedral Gmsh file.
 
 #include <signorini/scene/mesh.h>
 
@@ -12,6 +19,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 
@@ -31,20 +40,22 @@ namespace
     return g;
   }
 
+  template <int dim>
   void
-  measure(const parallel::distributed::Triangulation<2> &tria,
-          const std::map<types::boundary_id, double>    &expected_lengths,
-          const double                                   expected_area,
-          const std::string                             &label,
-          std::ostream                                  &out)
+  measure(const parallel::distributed::Triangulation<dim> &tria,
+          const std::map<types::boundary_id, double>      &expected_lengths,
+          const double                                     expected_area,
+          const std::string                               &label,
+          std::ostream                                    &out,
+          const double                                     tolerance = 1e-5)
   {
-    MappingQ<2>   mapping(2);
-    FE_Q<2>       fe(1);
-    QGauss<2>     q(4);
-    QGauss<1>     qf(4);
-    FEValues<2>   fv(mapping, fe, q, update_JxW_values);
-    FEFaceValues<2> ff(mapping, fe, qf, update_JxW_values);
-    double        area = 0.;
+    MappingQ<dim>       mapping(dim == 2 ? 2 : 3);
+    FE_Q<dim>           fe(1);
+    QGauss<dim>         q(4);
+    QGauss<dim - 1>     qf(4);
+    FEValues<dim>       fv(mapping, fe, q, update_JxW_values);
+    FEFaceValues<dim>   ff(mapping, fe, qf, update_JxW_values);
+    double              area = 0.;
     std::map<types::boundary_id, double> lengths;
     for (const auto &cell : tria.active_cell_iterators())
       {
@@ -59,18 +70,59 @@ namespace
                 lengths[cell->face(f)->boundary_id()] += ff.JxW(i);
             }
       }
-    out << label << ": area " << (std::abs(area - expected_area) < 1e-5 ? "ok" : "FAIL");
+    const char *measure_name = (dim == 2 ? "area" : "volume");
+    const char *part_name    = (dim == 2 ? "lengths" : "areas");
+    const bool  area_ok      = std::abs(area - expected_area) < tolerance;
+    out << label << ": " << measure_name << " " << (area_ok ? "ok" : "FAIL");
     bool ids_ok = lengths.size() == expected_lengths.size();
     for (const auto &l : expected_lengths)
       ids_ok = ids_ok && lengths.count(l.first) &&
-               std::abs(lengths[l.first] - l.second) < 1e-5;
-    out << ", boundary ids and lengths " << (ids_ok ? "ok" : "FAIL") << "\n";
-    if (!ids_ok || std::abs(area - expected_area) >= 1e-5)
+               std::abs(lengths[l.first] - l.second) < tolerance;
+    out << ", boundary ids and " << part_name << " " << (ids_ok ? "ok" : "FAIL") << "\n";
+    if (!ids_ok || !area_ok)
       {
-        std::cerr << label << " area " << area << "\n";
+        std::cerr << label << " " << measure_name << " " << area << " (expected "
+                  << expected_area << ")\n";
         for (const auto &l : lengths)
-          std::cerr << "  id " << int(l.first) << " length " << l.second << "\n";
+          std::cerr << "  id " << int(l.first) << " " << l.second << "\n";
       }
+  }
+
+  /**
+   * The largest distance, relative to @p scale, of a vertex of a boundary
+   * face with id @p id from the surface given by @p distance (zero on it).
+   */
+  template <typename Distance>
+  double
+  off_surface(const parallel::distributed::Triangulation<3> &tria,
+              const types::boundary_id                       id,
+              const Distance                                &distance)
+  {
+    double worst = 0.;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          for (const auto v : face->vertex_indices())
+            worst = std::max(worst, std::abs(distance(face->vertex(v))));
+    return worst;
+  }
+
+  void
+  surface_check(const std::string &label, const double worst, std::ostream &out)
+  {
+    out << label << (worst < 1e-13 ? ": on it to round-off" : ": FAIL") << "\n";
+    if (!(worst < 1e-13))
+      std::cerr << label << ": " << worst << "\n";
+  }
+
+  BodyGeometry
+  ball(const BodyGeometry::Shape shape, const Point<3> &c, const double r)
+  {
+    BodyGeometry g;
+    g.shape  = shape;
+    g.center = {c[0], c[1], c[2]};
+    g.radius = r;
+    return g;
   }
 } // namespace
 
@@ -113,5 +165,137 @@ main(int argc, char **argv)
         << ", 1 -> " << cells[1] << "\n";
     measure(tria, {{0, 1.}, {1, 1.}, {2, 4.}, {3, 4.}, {10, pi}, {11, 2.}},
             4. + pi / 2, "block + half disk", out);
+  }
+
+  // 3D. A ball of radius 0.8 around c = (0.3, -0.2, 1.1), 3 global
+  // refinements.
+  const Point<3> c(0.3, -0.2, 1.1);
+  const double   r = 0.8, r2 = r * r, volume = 4. / 3. * pi * r2 * r;
+  auto sphere       = [&](const Point<3> &x) { return (x.distance(c) - r) / r; };
+  mesh.global_refinements = 3;
+  {
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {ball(BodyGeometry::Shape::octant_ball, c, r)}, {0}, tria);
+    measure(tria, {{0, pi * r2 / 2}, {1, pi * r2 / 4}, {2, pi * r2 / 4}, {3, pi * r2 / 4}},
+            volume / 8, "octant ball", out);
+    surface_check("octant ball: vertices of the sphere (id 0)",
+                  off_surface(tria, 0, sphere), out);
+    surface_check("octant ball: vertices of the planes x = cx, top, y = cy",
+                  std::max({off_surface(tria, 1, [&](const Point<3> &x) { return x[0] - c[0]; }),
+                            off_surface(tria, 2, [&](const Point<3> &x) { return x[2] - c[2]; }),
+                            off_surface(tria, 3, [&](const Point<3> &x) { return x[1] - c[1]; })}),
+                  out);
+    bool lowest = false;
+    for (const auto &v : tria.get_vertices())
+      lowest = lowest || v.distance(Point<3>(c[0], c[1], c[2] - r)) < 1e-14;
+    out << "octant ball: the lowest point is a vertex: " << (lowest ? "yes" : "NO") << "\n";
+  }
+  {
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {ball(BodyGeometry::Shape::quarter_ball, c, r)}, {0}, tria);
+    measure(tria, {{0, pi * r2}, {1, pi * r2 / 2}, {2, pi * r2 / 2}}, volume / 4,
+            "quarter ball", out);
+    surface_check("quarter ball: vertices of the sphere (id 0)", off_surface(tria, 0, sphere),
+                  out);
+  }
+  {
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {ball(BodyGeometry::Shape::hemisphere, c, r)}, {0}, tria);
+    measure(tria, {{0, 2 * pi * r2}, {1, pi * r2}}, volume / 2, "hemisphere", out);
+    surface_check("hemisphere: vertices of the sphere (id 0)", off_surface(tria, 0, sphere),
+                  out);
+  }
+  // Cylinders of radius 0.8 and length 2.5 along y through c.
+  const double length = 2.5;
+  auto cylinder = [&](const Point<3> &x) {
+    return (std::hypot(x[0] - c[0], x[2] - c[2]) - r) / r;
+  };
+  mesh.global_refinements = 2;
+  for (const auto shape :
+       {BodyGeometry::Shape::quarter_cylinder, BodyGeometry::Shape::half_cylinder})
+    {
+      const bool quarter = shape == BodyGeometry::Shape::quarter_cylinder;
+      BodyGeometry g     = ball(shape, c, r);
+      g.length           = length;
+      parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+      build_scene_mesh<3>(mesh, {g}, {0}, tria);
+      const double section = pi * r2 / (quarter ? 4 : 2);
+      const std::string label = quarter ? "quarter cylinder" : "half cylinder";
+      if (quarter)
+        measure(tria, {{0, pi * r / 2 * length}, {1, r * length}, {2, r * length},
+                       {3, section}, {4, section}},
+                section * length, label, out);
+      else
+        measure(tria, {{0, pi * r * length}, {1, 2 * r * length}, {2, section}, {3, section}},
+                section * length, label, out);
+      surface_check(label + ": vertices of the curved surface (id 0)",
+                    off_surface(tria, 0, cylinder), out);
+    }
+  {
+    // A 3D die 1.2 wide (x), 2 long (y), 1 high (z), sag 0.3.
+    BodyGeometry g;
+    g.shape        = BodyGeometry::Shape::die;
+    g.lower_corner = {-0.6, -1., 0.};
+    g.upper_corner = {0.6, 1., 1.};
+    g.subdivisions = {4, 3, 2};
+    g.arc_sag      = 0.3;
+    const double w = 1.2, h = 1., s = 0.3, l = 2.;
+    const double R     = (w * w / 4 + s * s) / (2 * s);
+    const double angle = 2 * std::asin(w / (2 * R));
+    const double segment = 0.5 * R * R * (angle - std::sin(angle)); // between chord and arc
+    const double section = w * (h - s) + segment;
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, tria);
+    measure(tria, {{0, (R * angle + 2 * (h - s)) * l}, {1, w * l}, {2, section}, {3, section}},
+            section * l, "die (3D)", out);
+    const Point<3> axis(0., 0., R);
+    surface_check("die (3D): vertices of the arc and sides (id 0) on the arc or a side",
+                  off_surface(tria, 0, [&](const Point<3> &x) {
+                    return std::min({std::abs(std::hypot(x[0] - axis[0], x[2] - axis[2]) - R),
+                                     std::abs(x[0] + 0.6), std::abs(x[0] - 0.6)});
+                  }),
+                  out);
+  }
+  {
+    // An octant ball of radius 1 (material 1, ids + 10) resting on a box
+    // (material 0): they touch at the origin.
+    BodyGeometry block;
+    block.lower_corner = {-1., -1., -1.};
+    block.upper_corner = {1., 1., 0.};
+    block.subdivisions = {2, 2, 1};
+    BodyGeometry b       = ball(BodyGeometry::Shape::octant_ball, Point<3>(0, 0, 1), 1.);
+    b.boundary_id_offset = 10;
+    mesh.global_refinements = 2;
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {block, b}, {0, 1}, tria);
+    unsigned int at_origin = 0;
+    for (const auto &v : tria.get_vertices())
+      at_origin += (v.norm() < 1e-12);
+    std::map<types::material_id, unsigned int> cells;
+    for (const auto &cell : tria.active_cell_iterators())
+      ++cells[cell->material_id()];
+    out << "two bodies (3D): vertices at the contact point " << at_origin
+        << " (kept apart), cells per material id: 0 -> " << cells[0] << ", 1 -> "
+        << cells[1] << "\n";
+    measure(tria, {{0, 2.}, {1, 2.}, {2, 2.}, {3, 2.}, {4, 4.}, {5, 4.},
+                   {10, pi / 2}, {11, pi / 4}, {12, pi / 4}, {13, pi / 4}},
+            4. + pi / 6, "box + octant ball", out);
+  }
+  {
+    // A small hexahedral Gmsh file: the unit cube in 2 x 2 x 2 cells,
+    // faces tagged 10/11 (x = 0/1), 12/13 (y), 14/15 (z), cells 5.
+    MeshParameters gmsh;
+    gmsh.source             = MeshParameters::Source::gmsh;
+    gmsh.gmsh_file          = std::string(SIGNORINI_SOURCE_DIR) + "/tests/data/cube_2x2x2.msh";
+    gmsh.global_refinements = 1;
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(gmsh, {}, {}, tria);
+    bool material = true;
+    for (const auto &cell : tria.active_cell_iterators())
+      material = material && cell->material_id() == 5;
+    out << "Gmsh hexahedra: " << tria.n_global_active_cells()
+        << " cells after one refinement, material id 5: " << (material ? "yes" : "NO") << "\n";
+    measure(tria, {{10, 1.}, {11, 1.}, {12, 1.}, {13, 1.}, {14, 1.}, {15, 1.}}, 1.,
+            "Gmsh hexahedra", out);
   }
 }

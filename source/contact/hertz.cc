@@ -1,5 +1,8 @@
 #include <signorini/contact/hertz.h>
 #include <signorini/input_error.h>
+#include <signorini/parameters/lists.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -14,20 +17,25 @@ namespace Signorini
     double
     HertzReference::half_width() const
     {
+      if (point_contact())
+        return std::cbrt(3. * point_load * radius / (4. * contact_modulus));
       return std::sqrt(4. * line_load * radius / (numbers::PI * contact_modulus));
     }
 
     double
     HertzReference::peak_pressure() const
     {
-      return 2. * line_load / (numbers::PI * half_width());
+      const double a = half_width();
+      if (point_contact())
+        return 3. * point_load / (2. * numbers::PI * a * a);
+      return 2. * line_load / (numbers::PI * a);
     }
 
     double
-    HertzReference::pressure(const double x) const
+    HertzReference::pressure(const double s) const
     {
-      const double s = (x - axis) / half_width();
-      return std::abs(s) < 1. ? peak_pressure() * std::sqrt(1. - s * s) : 0.;
+      const double r = s / half_width();
+      return std::abs(r) < 1. ? peak_pressure() * std::sqrt(1. - r * r) : 0.;
     }
 
     void
@@ -36,8 +44,18 @@ namespace Signorini
       prm.declare_entry("Line load",
                         "0",
                         Patterns::Double(0.),
-                        "P, force per unit thickness on the whole cylinder "
-                        "[force/length]; 0: the scene has no Hertz reference.");
+                        "Line contact (2D): P, force per unit thickness on "
+                        "the whole cylinder [force/length]; 0: no line "
+                        "contact reference.");
+      prm.declare_entry("Point load",
+                        "0",
+                        Patterns::Double(0.),
+                        "Point contact (3D, a sphere): P, total force on "
+                        "the whole sphere [force]: a = (3 P R / (4 E*))^(1/3), "
+                        "p0 = 3 P / (2 pi a^2). 0: no point contact "
+                        "reference. At most one of 'Line load' and 'Point "
+                        "load' is > 0; neither: the scene has no Hertz "
+                        "reference.");
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(0.),
@@ -46,14 +64,19 @@ namespace Signorini
                         "negative: 1/R = 1/R1 - 1/R2).");
       prm.declare_entry("Axis position",
                         "0",
-                        Patterns::Double(),
-                        "x coordinate of the cylinder's axis [length].");
+                        Patterns::List(Patterns::Double(), 1, 2),
+                        "Line contact: x of the cylinder's axis [length]. "
+                        "Point contact: x, y of the vertical line through "
+                        "the sphere's centre (y = 0 if only x is given); "
+                        "the pressure is a function of the distance from "
+                        "it.");
       prm.declare_entry("Modelled fraction",
                         "1",
                         Patterns::Double(0., 1.),
-                        "Fraction of the cylinder the mesh holds (0.5 for a "
-                        "quarter disk with a symmetry line): the reference "
-                        "total contact force is this times P.");
+                        "Fraction of the body the mesh holds (0.5 for a "
+                        "quarter disk with a symmetry line, 0.25 for an "
+                        "octant ball with two symmetry planes): the "
+                        "reference total contact force is this times P.");
       prm.declare_entry("Contact modulus",
                         "0",
                         Patterns::Double(0.),
@@ -90,17 +113,30 @@ namespace Signorini
     HertzReference::parse_parameters(ParameterHandler &prm)
     {
       line_load         = prm.get_double("Line load");
+      point_load        = prm.get_double("Point load");
       radius            = prm.get_double("Radius");
-      axis              = prm.get_double("Axis position");
+      {
+        const std::string context = "Contact > Hertz reference";
+        const auto        n =
+          Utilities::split_string_list(prm.get("Axis position")).size();
+        const auto position =
+          get_list<double>(prm, "Axis position", std::max<std::size_t>(n, 1), context);
+        axis   = position[0];
+        axis_y = position.size() > 1 ? position[1] : 0.;
+      }
       modelled_fraction = prm.get_double("Modelled fraction");
       contact_modulus   = prm.get_double("Contact modulus");
       tolerance_a       = prm.get_double("Tolerance a");
       tolerance_p0      = prm.get_double("Tolerance p0");
       tolerance_force   = prm.get_double("Tolerance force");
       p0_from_fit       = (prm.get("Peak pressure from") == "fit");
-      if (line_load > 0. && !(radius > 0.))
+      if (line_load > 0. && point_load > 0.)
+        throw InputError("Contact > Hertz reference > Point load",
+                         "give either 'Line load' (line contact, 2D) or "
+                         "'Point load' (point contact, 3D), not both");
+      if (active() && !(radius > 0.))
         throw InputError("Contact > Hertz reference > Radius", "must be > 0");
-      if (line_load > 0. && !(modelled_fraction > 0.))
+      if (active() && !(modelled_fraction > 0.))
         throw InputError("Contact > Hertz reference > Modelled fraction",
                          "must be > 0");
     }
@@ -131,13 +167,16 @@ namespace Signorini
       {
         std::vector<std::pair<double, double>> sorted(samples);
         std::sort(sorted.begin(), sorted.end());
-        // The trapezoidal rule: sample i weighs half its two intervals.
+        // The trapezoidal rule: sample i weighs half its two intervals
+        // (times s, the ring's circumference over 2 pi, for point contact).
         double error2 = 0., norm2 = 0.;
         for (std::size_t i = 0; i < sorted.size(); ++i)
           {
             const double weight =
-              0.5 * (sorted[std::min(i + 1, sorted.size() - 1)].first -
-                     sorted[i > 0 ? i - 1 : 0].first);
+              0.5 *
+              (sorted[std::min(i + 1, sorted.size() - 1)].first -
+               sorted[i > 0 ? i - 1 : 0].first) *
+              (point_contact() ? std::abs(sorted[i].first) : 1.);
             const double reference = pressure(sorted[i].first);
             const double e         = sorted[i].second - reference;
             error2 += weight * e * e;
@@ -151,7 +190,7 @@ namespace Signorini
       for (const auto &s : samples)
         {
           p_max = std::max(p_max, s.second);
-          const double d = std::abs(s.first - axis);
+          const double d = std::abs(s.first);
           if (d < nearest)
             {
               nearest    = d;
@@ -166,7 +205,7 @@ namespace Signorini
       for (const auto &s : samples)
         if (s.second >= 0.25 * p_max)
           {
-            const double x = (s.first - axis) * (s.first - axis);
+            const double x = s.first * s.first;
             const double y = s.second * s.second;
             sx += x;
             sy += y;

@@ -31,7 +31,7 @@ namespace Signorini
         if (d == dim - 1 && hertz.active())
           {
             q.has_reference = true;
-            q.reference     = hertz.modelled_fraction * hertz.line_load;
+            q.reference     = hertz.modelled_fraction * hertz.load();
             q.tolerance     = hertz.tolerance_force;
           }
         quantities.push_back(q);
@@ -49,10 +49,12 @@ namespace Signorini
       {
         std::vector<std::pair<double, double>> samples;
         for (const auto &p : pressure)
-          samples.emplace_back(p.first[0], p.second);
+          samples.emplace_back(hertz.distance(p.first), p.second);
         for (const auto &q : hertz.quantities(samples))
           quantities.push_back(q);
-        reference = [&hertz](const Point<dim> &x) { return hertz.pressure(x[0]); };
+        reference = [&hertz](const Point<dim> &x) {
+          return hertz.pressure(hertz.distance(x));
+        };
       }
     contact.write_profile_csv(profile_file, u, reference);
     return quantities;

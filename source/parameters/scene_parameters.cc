@@ -53,8 +53,20 @@ namespace Signorini
                         "1",
                         Patterns::Integer(1, 2),
                         "Degree p of the FE_Q(p)^dim displacement element; "
-                        "the mapping is of the same degree (curved cells "
-                        "follow curved boundaries for p = 2).");
+                        "the mapping is of the same degree unless 'Mapping "
+                        "degree' says otherwise (curved cells follow curved "
+                        "boundaries for p = 2).");
+      prm.declare_entry("Mapping degree",
+                        "0",
+                        Patterns::Integer(0, 3),
+                        "Degree of the MappingQ that maps the cells; 0: the "
+                        "polynomial degree. 2 with Q1 elements makes the "
+                        "cells at a curved boundary follow its manifold "
+                        "(sphere, cylinder), so that areas and volumes there, "
+                        "e.g. the area of a ball's flat top whose rim is "
+                        "curved and with it the total of a traction on it, "
+                        "are exact to O(h^4) instead of O(h^2); the contact "
+                        "nodes are the same.");
       prm.leave_subsection();
     }
 
@@ -62,7 +74,10 @@ namespace Signorini
     Discretization::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Discretization");
-      degree = prm.get_integer("Polynomial degree");
+      degree         = prm.get_integer("Polynomial degree");
+      mapping_degree = prm.get_integer("Mapping degree");
+      if (mapping_degree == 0)
+        mapping_degree = degree;
       prm.leave_subsection();
     }
 
@@ -355,9 +370,19 @@ namespace Signorini
         throw InputError("Contact > Type",
                          "two bodies needs Body 2 > Active = true");
       auto &hertz = contact.hertz;
+      const std::string hertz_load = std::string("Contact > Hertz reference > ") +
+                                     (hertz.point_contact() ? "Point load" : "Line load");
       if (hertz.active() && contact.type == Contact::Type::none)
-        throw InputError("Contact > Hertz reference > Line load",
+        throw InputError(hertz_load,
                          "a Hertz reference needs contact (Contact > Type)");
+      if (hertz.point_contact() && dim != 3)
+        throw InputError(hertz_load,
+                         "point contact (a sphere) needs Dimension = 3; in 2D "
+                         "use 'Line load'");
+      if (hertz.line_load > 0. && dim != 2)
+        throw InputError(hertz_load,
+                         "line contact is per unit thickness (Dimension = 2); "
+                         "in 3D use 'Point load' (a sphere)");
       if (hertz.active() && hertz.contact_modulus <= 0.)
         {
           // 1/E* = sum over the bodies in contact of (1 - nu^2)/E.

@@ -193,21 +193,41 @@ namespace Signorini
   {
     prm.declare_entry("Shape",
                       "rectangle",
-                      Patterns::Selection("rectangle|quarter disk|half disk|die"),
+                      Patterns::Selection("rectangle|quarter disk|half disk|die|"
+                                          "octant ball|quarter ball|hemisphere|"
+                                          "quarter cylinder|half cylinder"),
                       "Built-in shape of the body (used when Mesh > Source = "
-                      "generated). rectangle: a rectangle (2D) or box (3D) "
+                      "generated). y is vertical in 2D, z in 3D. "
+                      "rectangle: a rectangle (2D) or box (3D) "
                       "with boundary ids 0/1 at x min/max, 2/3 at y min/max, "
                       "4/5 at z min/max. quarter disk (2D): the lower right "
                       "quarter {x >= cx, y <= cy} of the disk, ids 0 arc, "
                       "1 edge x = cx, 2 edge y = cy. half disk (2D): the "
                       "lower half {y <= cy}, ids 0 arc, 1 flat top. The "
                       "lowest point of a disk of center (0, R) touches y = 0 "
-                      "at the origin. die (2D): the rectangle between the "
-                      "two corners whose bottom edge is replaced by a "
-                      "circular arc of height 'Arc sag' through the two "
-                      "lower corners; its lowest point is the middle of "
-                      "the lower edge. ids 0 the arc and both sides (the "
-                      "surface that can touch), 1 the top.");
+                      "at the origin. die: the rectangle (3D: box) between "
+                      "the two corners whose bottom is replaced by a "
+                      "circular arc (3D: a cylindrical surface along y) of "
+                      "height 'Arc sag' through the lower edges x = x min "
+                      "and x = x max; its lowest points are at the middle "
+                      "of x. ids 0 the arc and both sides x = x min, x max "
+                      "(the surface that can touch), 1 the top, in 3D 2/3 "
+                      "the ends y min/max. octant ball (3D): {x >= cx, "
+                      "y >= cy, z <= cz} of the ball, ids 0 sphere, 1 plane "
+                      "x = cx, 2 flat top z = cz, 3 plane y = cy. quarter "
+                      "ball (3D): {x >= cx, z <= cz}, ids 0 sphere, 1 plane "
+                      "x = cx, 2 flat top. hemisphere (3D): {z <= cz}, ids "
+                      "0 sphere, 1 flat top. A ball of center (0, 0, R) "
+                      "touches z = 0 at the origin, which is a mesh vertex. "
+                      "quarter cylinder (3D): the quarter disk {x >= cx, "
+                      "z <= cz} of the x-z plane extruded along y over "
+                      "'Length' (y in [cy - L/2, cy + L/2]), ids 0 curved "
+                      "surface, 1 plane x = cx, 2 flat top z = cz, 3/4 the "
+                      "ends y min/max. half cylinder (3D): the half disk "
+                      "{z <= cz} extruded likewise, ids 0 curved surface, "
+                      "1 flat top, 2/3 the ends y min/max. Curved surfaces "
+                      "carry a spherical or cylindrical manifold: refined "
+                      "vertices lie on the exact surface.");
     prm.declare_entry("Lower corner",
                       "0, 0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
@@ -224,13 +244,25 @@ namespace Signorini
     prm.declare_entry("Center",
                       "0, 1, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
-                      "Disks: center of the full disk [length].");
-    prm.declare_entry("Radius", "1", Patterns::Double(), "Disks: radius [length], > 0.");
+                      "Disks, ball parts and cylinders: center of the full "
+                      "disk or ball [length], dim entries (3 for a ball part "
+                      "or a cylinder; a cylinder's axis is the line through "
+                      "it parallel to y).");
+    prm.declare_entry("Radius", "1", Patterns::Double(),
+                      "Disks, ball parts and cylinders: radius [length], > 0.");
+    prm.declare_entry("Length",
+                      "1",
+                      Patterns::Double(),
+                      "Quarter and half cylinder (3D): length along the axis "
+                      "(parallel to y, centred on the Center's y) [length], "
+                      "> 0. The coarse mesh has about one cell per half "
+                      "radius along the axis.");
     prm.declare_entry("Arc sag",
                       "0.3",
                       Patterns::Double(),
                       "Die: height of the circular arc at the bottom "
-                      "[length], > 0 and below the die's height; the "
+                      "[length], > 0 and below the die's height (along y in "
+                      "2D, z in 3D); the "
                       "radius is (w^2/4 + s^2)/(2 s) for width w and sag s.");
     prm.declare_entry("Boundary id offset",
                       "0",
@@ -246,15 +278,21 @@ namespace Signorini
                                  const std::string &context)
   {
     const std::string s = prm.get("Shape");
-    shape = (s == "rectangle"    ? Shape::rectangle :
-             s == "quarter disk" ? Shape::quarter_disk :
-             s == "die"          ? Shape::die :
-                                   Shape::half_disk);
+    shape = (s == "rectangle"        ? Shape::rectangle :
+             s == "quarter disk"     ? Shape::quarter_disk :
+             s == "die"              ? Shape::die :
+             s == "octant ball"      ? Shape::octant_ball :
+             s == "quarter ball"     ? Shape::quarter_ball :
+             s == "hemisphere"       ? Shape::hemisphere :
+             s == "quarter cylinder" ? Shape::quarter_cylinder :
+             s == "half cylinder"    ? Shape::half_cylinder :
+                                       Shape::half_disk);
     lower_corner       = get_list<double>(prm, "Lower corner", dim, context);
     upper_corner       = get_list<double>(prm, "Upper corner", dim, context);
     subdivisions       = get_list<unsigned int>(prm, "Subdivisions", dim, context);
     center             = get_list<double>(prm, "Center", dim, context);
     radius             = prm.get_double("Radius");
+    length             = prm.get_double("Length");
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
 
@@ -278,26 +316,46 @@ namespace Signorini
                            "direction, got lower = '" +
                              prm.get("Lower corner") + "', upper = '" +
                              prm.get("Upper corner") + "'");
+    const bool only_2d =
+      shape == Shape::quarter_disk || shape == Shape::half_disk;
+    const bool only_3d = !only_2d && shape != Shape::rectangle &&
+                         shape != Shape::die;
+    if (only_2d && dim != 2)
+      throw InputError(context + " > Shape",
+                       "'" + s + "' is a 2D shape; in 3D use a ball part "
+                       "(octant ball, quarter ball, hemisphere) or a "
+                       "quarter or half cylinder");
+    if (only_3d && dim != 3)
+      throw InputError(context + " > Shape",
+                       "'" + s + "' is a 3D shape; in 2D use a quarter disk "
+                       "or a half disk");
     if (shape == Shape::die)
       {
-        if (dim != 2)
-          throw InputError(context + " > Shape",
-                           "'die' is a 2D shape; in 3D use a Gmsh mesh");
-        if (!(arc_sag > 0.) || !(arc_sag < upper_corner[1] - lower_corner[1]))
+        const double height = upper_corner[dim - 1] - lower_corner[dim - 1];
+        if (!(arc_sag > 0.) || !(arc_sag < height))
           throw InputError(context + " > Arc sag",
                            "must be > 0 and below the die's height " +
-                             std::to_string(upper_corner[1] - lower_corner[1]) +
-                             ", got " + prm.get("Arc sag"));
+                             format_count(height) + ", got " +
+                             prm.get("Arc sag"));
       }
     else if (shape != Shape::rectangle)
       {
-        if (dim != 2)
-          throw InputError(context + " > Shape",
-                           "'" + s + "' is a 2D shape; in 3D use a "
-                           "rectangle or a Gmsh mesh");
-        if (!(radius > 0.))
+        if (!(radius > 0.) || !std::isfinite(radius))
           throw InputError(context + " > Radius",
                            "must be > 0, got " + prm.get("Radius"));
+        if (shape == Shape::quarter_cylinder || shape == Shape::half_cylinder)
+          {
+            if (!(length > 0.) || !std::isfinite(length))
+              throw InputError(context + " > Length",
+                               "must be > 0, got " + prm.get("Length"));
+            if (length / radius > max_coarse_cells / 4.)
+              throw InputError(context + " > Length",
+                               "'" + prm.get("Length") + "' is " +
+                                 format_count(length / radius) +
+                                 " radii: the coarse mesh would have more "
+                                 "than " + format_count(max_coarse_cells) +
+                                 " cells");
+          }
       }
   }
 
@@ -370,8 +428,14 @@ namespace Signorini
     template <int dim>
     struct ManifoldSpec
     {
+      enum class Kind
+      {
+        spherical,   // SphericalManifold around center
+        cylindrical, // CylindricalManifold, axis along y through center
+        transfinite
+      };
       types::manifold_id id;
-      bool               transfinite;
+      Kind               kind;
       Point<dim>         center;
     };
 
@@ -385,8 +449,243 @@ namespace Signorini
       return p;
     }
 
+    template <int dim>
+    void
+    build_body(const BodyGeometry             &g,
+               const types::material_id        material_id,
+               const unsigned int              body_index,
+               Triangulation<dim>             &tria,
+               std::vector<ManifoldSpec<dim>> &manifolds);
+
+    /// The boundary faces of a generated body whose vertices all lie on the
+    /// plane x_axis = value get the boundary id @p id.
+    struct PlanarPart
+    {
+      unsigned int       axis;
+      double             value;
+      types::boundary_id id;
+    };
+
     /**
-     * Build one body's coarse mesh. Disks are generated around the origin
+     * Boundary and manifold ids of a curved 3D body: every cell gets the
+     * transfinite manifold; a boundary face on one of @p planes gets that
+     * plane's id and the flat manifold (on the face and its edges); every
+     * other boundary face is the curved surface: id 0 and @p curved_id on
+     * the face and its edges. The curved faces come last, so that an edge
+     * shared by a plane and the curved surface (the rim of a flat top)
+     * follows the curve.
+     */
+    void
+    assign_curved_ids(Triangulation<3>              &tria,
+                      const std::vector<PlanarPart> &planes,
+                      const double                   tol,
+                      const types::manifold_id       curved_id,
+                      const types::manifold_id       transfinite_id)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->set_all_manifold_ids(transfinite_id);
+      std::vector<Triangulation<3>::face_iterator> curved;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              bool planar = false;
+              for (const auto &plane : planes)
+                {
+                  bool on_plane = true;
+                  for (const auto v : face->vertex_indices())
+                    on_plane = on_plane &&
+                               std::abs(face->vertex(v)[plane.axis] - plane.value) < tol;
+                  if (on_plane)
+                    {
+                      face->set_boundary_id(plane.id);
+                      face->set_all_manifold_ids(numbers::flat_manifold_id);
+                      planar = true;
+                      break;
+                    }
+                }
+              if (!planar)
+                {
+                  face->set_boundary_id(0);
+                  curved.push_back(face);
+                }
+            }
+      for (const auto &face : curved)
+        face->set_all_manifold_ids(curved_id);
+    }
+
+    /**
+     * A ball part (3D): deal.II's octant {x, y, z >= 0} of the ball around
+     * the origin (quarter_hyper_ball); the quarter {y >= 0, z >= 0} and the
+     * half {z >= 0} are two and four copies of it turned about z by
+     * multiples of 90 degrees (vertices merged). The rotation
+     * (x, y, z) -> (y, x, -z) turns them into the lower parts named in
+     * BodyGeometry, which are then shifted to the center.
+     */
+    void
+    build_ball_part(const BodyGeometry           &g,
+                    const unsigned int            body_index,
+                    Triangulation<3>             &tria,
+                    std::vector<ManifoldSpec<3>> &manifolds)
+    {
+      using Shape                 = BodyGeometry::Shape;
+      const unsigned int copies   = (g.shape == Shape::octant_ball  ? 1 :
+                                     g.shape == Shape::quarter_ball ? 2 :
+                                                                      4);
+      std::vector<std::unique_ptr<Triangulation<3>>> parts;
+      for (unsigned int k = 0; k < copies; ++k)
+        {
+          parts.push_back(std::make_unique<Triangulation<3>>());
+          GridGenerator::quarter_hyper_ball(*parts.back(), Point<3>(), g.radius);
+          // k quarter turns about z: (x, y) -> (-y, x), exact in floating point.
+          GridTools::transform(
+            [k](const Point<3> &p) {
+              Point<3> q = p;
+              for (unsigned int turn = 0; turn < k; ++turn)
+                q = Point<3>(-q[1], q[0], q[2]);
+              return q;
+            },
+            *parts.back());
+        }
+      if (copies == 1)
+        tria.copy_triangulation(*parts[0]);
+      else
+        {
+          std::vector<const Triangulation<3> *> pointers;
+          for (const auto &part : parts)
+            pointers.push_back(part.get());
+          GridGenerator::merge_triangulations(pointers, tria, 1e-10 * g.radius);
+        }
+      tria.reset_all_manifolds();
+      const Point<3> center(g.center[0], g.center[1], g.center[2]);
+      GridTools::transform(
+        [&](const Point<3> &p) { return center + Point<3>(p[1], p[0], -p[2]); }, tria);
+
+      std::vector<PlanarPart> planes;
+      if (g.shape == Shape::hemisphere)
+        planes.push_back({2, center[2], 1});
+      else
+        {
+          planes.push_back({0, center[0], 1});
+          planes.push_back({2, center[2], 2});
+        }
+      if (g.shape == Shape::octant_ball)
+        planes.push_back({1, center[1], 3});
+      const types::manifold_id sphere_id      = 2 * body_index;
+      const types::manifold_id transfinite_id = 2 * body_index + 1;
+      assign_curved_ids(tria, planes, 1e-8 * g.radius, sphere_id, transfinite_id);
+      manifolds.push_back({sphere_id, ManifoldSpec<3>::Kind::spherical, center});
+      manifolds.push_back({transfinite_id, ManifoldSpec<3>::Kind::transfinite, center});
+    }
+
+    /**
+     * A 3D body that is a 2D section extruded along y: the quarter or half
+     * cylinder (section: the quarter or half disk) and the 3D die (section:
+     * the 2D die). The section is built in the x-z plane as the 2D shape in
+     * (x, y), extruded over the length, and turned by the rotation
+     * (x, y, z) -> (x, y_max - z, y) about x, which takes the section's
+     * vertical y to z. The curved surface gets a CylindricalManifold along
+     * y through the section's arc center.
+     */
+    void
+    build_extruded(const BodyGeometry           &g,
+                   const unsigned int            body_index,
+                   Triangulation<3>             &tria,
+                   std::vector<ManifoldSpec<3>> &manifolds)
+    {
+      using Shape          = BodyGeometry::Shape;
+      BodyGeometry section = g;
+      section.boundary_id_offset = 0;
+      double       y_min = 0., y_max = 0., size = 0.;
+      unsigned int slices = 1;
+      if (g.shape == Shape::die)
+        {
+          section.lower_corner = {g.lower_corner[0], g.lower_corner[2]};
+          section.upper_corner = {g.upper_corner[0], g.upper_corner[2]};
+          section.subdivisions = {g.subdivisions[0], g.subdivisions[2]};
+          y_min                = g.lower_corner[1];
+          y_max                = g.upper_corner[1];
+          slices               = g.subdivisions[1];
+          for (unsigned int d = 0; d < 3; ++d)
+            size = std::max(size, g.upper_corner[d] - g.lower_corner[d]);
+        }
+      else
+        {
+          section.shape =
+            (g.shape == Shape::quarter_cylinder ? Shape::quarter_disk : Shape::half_disk);
+          section.center = {g.center[0], g.center[2]};
+          y_min          = g.center[1] - 0.5 * g.length;
+          y_max          = g.center[1] + 0.5 * g.length;
+          // About one coarse cell per half radius along the axis, as in
+          // the section.
+          slices = std::max(1l, std::lround(g.length / (0.5 * g.radius)));
+          size   = std::max(g.radius, g.length);
+        }
+      Triangulation<2>             flat;
+      std::vector<ManifoldSpec<2>> section_manifolds;
+      build_body<2>(section, 0, 0, flat, section_manifolds);
+      const Point<2> arc_center = section_manifolds.front().center;
+      GridGenerator::extrude_triangulation(flat, slices, y_max - y_min, tria);
+      tria.reset_all_manifolds();
+      GridTools::transform(
+        [y_max](const Point<3> &p) { return Point<3>(p[0], y_max - p[2], p[1]); },
+        tria);
+
+      // Then the ends y_min, y_max get the next two ids.
+      std::vector<PlanarPart> planes;
+      types::boundary_id      next = 2;
+      if (g.shape == Shape::die)
+        {
+          planes.push_back({2, g.upper_corner[2], 1});
+          planes.push_back({0, g.lower_corner[0], 0});
+          planes.push_back({0, g.upper_corner[0], 0});
+        }
+      else if (g.shape == Shape::quarter_cylinder)
+        {
+          planes.push_back({0, g.center[0], 1});
+          planes.push_back({2, g.center[2], 2});
+          next = 3;
+        }
+      else
+        planes.push_back({2, g.center[2], 1});
+      planes.push_back({1, y_min, next});
+      planes.push_back({1, y_max, types::boundary_id(next + 1)});
+      const types::manifold_id curved_id      = 2 * body_index;
+      const types::manifold_id transfinite_id = 2 * body_index + 1;
+      assign_curved_ids(tria, planes, 1e-8 * size, curved_id, transfinite_id);
+      const Point<3> axis_point(arc_center[0], 0., arc_center[1]);
+      manifolds.push_back({curved_id, ManifoldSpec<3>::Kind::cylindrical, axis_point});
+      manifolds.push_back({transfinite_id, ManifoldSpec<3>::Kind::transfinite, axis_point});
+    }
+
+    template <int dim>
+    void
+    build_curved_3d(const BodyGeometry             &g,
+                    const unsigned int              body_index,
+                    Triangulation<dim>             &tria,
+                    std::vector<ManifoldSpec<dim>> &manifolds)
+    {
+      if constexpr (dim == 3)
+        {
+          using Shape = BodyGeometry::Shape;
+          if (g.shape == Shape::octant_ball || g.shape == Shape::quarter_ball ||
+              g.shape == Shape::hemisphere)
+            build_ball_part(g, body_index, tria, manifolds);
+          else
+            build_extruded(g, body_index, tria, manifolds);
+        }
+      else
+        {
+          (void)g;
+          (void)body_index;
+          (void)tria;
+          (void)manifolds;
+          Assert(false, ExcInternalError());
+        }
+    }
+
+    /**
+     * Build one body's coarse mesh (the 3D curved shapes: above). Disks are generated around the origin
      * as the upper right quarter/right half that deal.II provides, rotated
      * by -90 degrees (x, y) -> (y, -x) (a rotation keeps the cells
      * positively oriented, a reflection would not), and shifted to the
@@ -400,7 +699,9 @@ namespace Signorini
                Triangulation<dim>             &tria,
                std::vector<ManifoldSpec<dim>> &manifolds)
     {
-      if (g.shape == BodyGeometry::Shape::rectangle)
+      if (dim == 3 && g.shape != BodyGeometry::Shape::rectangle)
+        build_curved_3d(g, body_index, tria, manifolds);
+      else if (g.shape == BodyGeometry::Shape::rectangle)
         {
           GridGenerator::subdivided_hyper_rectangle(tria,
                                                     g.subdivisions,
@@ -456,8 +757,9 @@ namespace Signorini
                     face->set_boundary_id(face->boundary_id() == 3 ? 1 : 0);
                   }
             }
-          manifolds.push_back({arc_id, false, center});
-          manifolds.push_back({transfinite_id, true, center});
+          manifolds.push_back({arc_id, ManifoldSpec<dim>::Kind::spherical, center});
+          manifolds.push_back(
+            {transfinite_id, ManifoldSpec<dim>::Kind::transfinite, center});
         }
       else
         {
@@ -506,8 +808,9 @@ namespace Signorini
                       }
                   }
             }
-          manifolds.push_back({arc_id, false, center});
-          manifolds.push_back({transfinite_id, true, center});
+          manifolds.push_back({arc_id, ManifoldSpec<dim>::Kind::spherical, center});
+          manifolds.push_back(
+            {transfinite_id, ManifoldSpec<dim>::Kind::transfinite, center});
         }
 
       for (const auto &cell : tria.active_cell_iterators())
@@ -534,6 +837,8 @@ namespace Signorini
       SubCellData                subcells;
       for (const auto &part : parts)
         {
+          if constexpr (dim == 3)
+            part->clear_user_flags_line();
           const unsigned int offset = vertices.size();
           const auto        &v      = part->get_vertices();
           vertices.insert(vertices.end(), v.begin(), v.end());
@@ -560,6 +865,25 @@ namespace Signorini
                       subcells.boundary_lines.push_back(f);
                     else
                       subcells.boundary_quads.push_back(f);
+                  }
+              // In 3D the edges carry their own manifold ids (the rim of
+              // a flat top follows the curved surface): each edge once.
+              if constexpr (dim == 3)
+                for (unsigned int l = 0; l < cell->n_lines(); ++l)
+                  {
+                    const auto line = cell->line(l);
+                    if (line->manifold_id() == numbers::flat_manifold_id ||
+                        line->user_flag_set())
+                      continue;
+                    line->set_user_flag();
+                    CellData<1> e;
+                    e.vertices[0] = offset + line->vertex_index(0);
+                    e.vertices[1] = offset + line->vertex_index(1);
+                    e.boundary_id = line->at_boundary() ?
+                                      line->boundary_id() :
+                                      numbers::internal_face_boundary_id;
+                    e.manifold_id = line->manifold_id();
+                    subcells.boundary_lines.push_back(e);
                   }
             }
         }
@@ -620,14 +944,17 @@ namespace Signorini
       }
 
     for (const auto &m : manifolds)
-      if (m.transfinite)
+      if (m.kind == ManifoldSpec<dim>::Kind::transfinite)
         {
           TransfiniteInterpolationManifold<dim> transfinite;
           transfinite.initialize(tria);
           tria.set_manifold(m.id, transfinite);
         }
-      else
+      else if (m.kind == ManifoldSpec<dim>::Kind::spherical)
         tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
+      else if constexpr (dim == 3)
+        tria.set_manifold(m.id, CylindricalManifold<dim>(Point<dim>(0., 1., 0.),
+                                                          m.center));
 
     if (coarse_only)
       return;

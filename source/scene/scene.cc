@@ -70,7 +70,7 @@ namespace Signorini
 
 
     fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(p.discretization.degree), dim);
-    mapping = std::make_unique<MappingQ<dim>>(p.discretization.degree);
+    mapping = std::make_unique<MappingQ<dim>>(p.discretization.mapping_degree);
   }
 
   template <int dim>

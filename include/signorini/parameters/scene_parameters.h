@@ -55,7 +55,8 @@ namespace Signorini
     /// "Discretization".
     struct Discretization
     {
-      unsigned int degree = 1; // FE_Q(p)^dim and MappingQ(p)
+      unsigned int degree         = 1; // FE_Q(p)^dim
+      unsigned int mapping_degree = 1; // MappingQ (p unless given)
 
       static void
       declare_parameters(ParameterHandler &prm);

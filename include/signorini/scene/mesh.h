@@ -13,17 +13,36 @@ namespace Signorini
   using namespace dealii;
 
   /**
-   * The built-in shape of one body, from its "Geometry" subsection.
+   * The built-in shape of one body, from its "Geometry" subsection. In 2D
+   * y is vertical, in 3D z is (the foundation is x_d = psi(x')).
    *
    * Boundary ids (before 'Boundary id offset' is added):
    * - rectangle/box: 0 x = x_min, 1 x = x_max, 2 y = y_min, 3 y = y_max,
    *   4 z = z_min, 5 z = z_max;
-   * - quarter disk (the lower right quarter x >= cx, y <= cy): 0 the arc,
-   *   1 the edge x = cx (symmetry), 2 the edge y = cy (flat top);
-   * - half disk (the lower half y <= cy): 0 the arc, 1 the flat top y = cy;
-   * - die (a rectangle whose bottom edge is a circular arc of height
-   *   'Arc sag' through the lower corners): 0 the arc and both sides, 1 the
-   *   top.
+   * - quarter disk (2D, the lower right quarter x >= cx, y <= cy): 0 the
+   *   arc, 1 the edge x = cx (symmetry), 2 the edge y = cy (flat top);
+   * - half disk (2D, the lower half y <= cy): 0 the arc, 1 the flat top
+   *   y = cy;
+   * - die (a rectangle, in 3D a box, whose bottom is a circular arc, in 3D
+   *   a cylindrical surface along y, of height 'Arc sag' through the lower
+   *   edges x = x_min and x = x_max): 0 the arc and both sides x = x_min,
+   *   x = x_max, 1 the top; in 3D also 2 the end y = y_min, 3 the end
+   *   y = y_max;
+   * - octant ball (3D, x >= cx, y >= cy, z <= cz): 0 the sphere, 1 the
+   *   plane x = cx, 2 the flat top z = cz, 3 the plane y = cy;
+   * - quarter ball (3D, x >= cx, z <= cz): 0 the sphere, 1 the plane
+   *   x = cx, 2 the flat top z = cz;
+   * - hemisphere (3D, z <= cz): 0 the sphere, 1 the flat top z = cz;
+   * - quarter cylinder (3D, the quarter disk in the x-z plane extruded
+   *   along y over 'Length', centred on cy): 0 the curved surface, 1 the
+   *   plane x = cx, 2 the flat top z = cz, 3 the end y = cy - L/2, 4 the
+   *   end y = cy + L/2;
+   * - half cylinder (3D, the half disk z <= cz extruded likewise): 0 the
+   *   curved surface, 1 the flat top, 2 the end y = cy - L/2, 3 the end
+   *   y = cy + L/2.
+   * The ball parts are one, two or four copies of deal.II's octant
+   * (quarter_hyper_ball), so that the lowest point of the ball is a mesh
+   * vertex.
    */
   struct BodyGeometry
   {
@@ -32,7 +51,12 @@ namespace Signorini
       rectangle,
       quarter_disk,
       half_disk,
-      die
+      die,
+      octant_ball,
+      quarter_ball,
+      hemisphere,
+      quarter_cylinder,
+      half_cylinder
     };
 
     Shape                     shape = Shape::rectangle;
@@ -41,6 +65,7 @@ namespace Signorini
     std::vector<unsigned int> subdivisions;
     std::vector<double>       center;
     double                    radius             = 1.;
+    double                    length             = 1.;
     double                    arc_sag            = 0.3;
     unsigned int              boundary_id_offset = 0;
 
@@ -81,8 +106,10 @@ namespace Signorini
    * material id @p material_ids[b]; the bodies keep their own vertices,
    * so bodies that touch are not glued together), or a Gmsh file whose
    * physical tags give material and boundary ids. Curved boundaries get
-   * a SphericalManifold and the cells next to them a transfinite
-   * interpolation, so refinement follows the geometry. After the
+   * a SphericalManifold (a CylindricalManifold for the cylinders and the
+   * 3D die; on their faces and, in 3D, their edges) and the cells of the
+   * curved body a transfinite interpolation, so refinement follows the
+   * geometry. After the
    * global refinements, 'Local refinements' more levels are added to the
    * cells that have a vertex within 'Local refinement radius' of
    * 'Local refinement center' (a contact zone, say); p4est keeps
