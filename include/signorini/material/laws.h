@@ -66,7 +66,14 @@ namespace Signorini
       {
         const double lnJ = std::log(J);
         psi     = 0.5 * mu * (I1 - 3.) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
-        dpsi    = {{0.5 * mu, 0., (lambda * lnJ - mu) / J}};
+        // psi_J in the order in which Sacado differentiates energy(), so
+        // that it rounds as its oracle does: in a body that barely strains
+        // (tests/hertz_stiff_block) P = mu F + J psi_J F^-T is a
+        // difference of terms 1e5 times larger, and the last bit of psi_J
+        // decided whether a load step converged within its iterations.
+        const double r = 1. / J;
+        dpsi    = {{0.5 * mu, 0., -mu * r + (0.5 * lambda * r * lnJ +
+                                            0.5 * lambda * lnJ * r)}};
         d2psi   = {};
         d2psi[2][2] = (lambda + mu - lambda * lnJ) / (J * J);
       }
