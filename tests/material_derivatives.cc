@@ -8,7 +8,10 @@
 // deliberately corrupted tangent of every law and must reject it, so this
 // test can fail. Then checks of the Gent law: psi against its formula, the
 // domain (I1b - 3 < J_m, J > 0), the neo-Hookean limit J_m -> infinity and
-// its Lame pair.
+// its Lame pair. Last, every law that gives its invariant derivatives in
+// closed form is compared with the same law differentiated by Sacado (the
+// registry's oracle) at moderate and large strains, and that comparison
+// must reject a corrupted tangent too.
 
 #include <signorini/material/gent.h>
 #include <signorini/material/interface.h>
@@ -21,6 +24,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <random>
 
 using namespace dealii;
@@ -202,6 +206,72 @@ namespace
     return worst;
   }
 
+  /// Deformation gradients for the oracle comparison: random ones with
+  /// entries of F - I up to 0.3 and large strains (stretch to 2.2,
+  /// compression to 0.35, simple shear of 1.5, a rotated stretch).
+  template <int dim>
+  std::vector<Tensor<2, dim>>
+  oracle_samples()
+  {
+    std::mt19937                rng(11);
+    std::vector<Tensor<2, dim>> samples;
+    for (unsigned int k = 0; k < 10; ++k)
+      samples.push_back(random_F<dim>(rng, 0.3));
+    Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+    F[0][0]          = 2.2;
+    F[1][1]          = 0.8;
+    samples.push_back(F);
+    F       = unit_symmetric_tensor<dim>();
+    F[0][0] = 0.35;
+    F[1][1] = 0.6;
+    samples.push_back(F);
+    F       = unit_symmetric_tensor<dim>();
+    F[0][1] = 1.5;
+    samples.push_back(F);
+    F       = unit_symmetric_tensor<dim>();
+    F[0][0] = 1.7;
+    F[1][1] = 1.0 / 1.7;
+    samples.push_back(Tensor<2, dim>(rotation<dim>(0.4) * F));
+    return samples;
+  }
+
+  /// Largest relative difference of psi, P and A of a law against its
+  /// Sacado oracle over oracle_samples(); a difference in admissibility
+  /// counts as infinite. @p n_compared receives the number of samples at
+  /// which both are defined.
+  template <int dim>
+  double
+  oracle_difference(const Material::Interface &law,
+                    const Material::Interface &oracle,
+                    unsigned int              &n_compared)
+  {
+    double worst = 0.;
+    n_compared   = 0;
+    for (const Tensor<2, dim> &F : oracle_samples<dim>())
+      {
+        Material::Response<dim> r, ro;
+        const bool              ok  = Material::evaluate(law, F, r, true);
+        const bool              oko = Material::evaluate(oracle, F, ro, true);
+        if (ok != oko)
+          return std::numeric_limits<double>::infinity();
+        if (!ok)
+          continue;
+        ++n_compared;
+        worst = std::max({worst,
+                          std::abs(r.psi - ro.psi) /
+                            std::max(std::abs(ro.psi), 1e-300),
+                          (r.P - ro.P).norm() / std::max(ro.P.norm(), 1e-300),
+                          (r.A - ro.A).norm() / ro.A.norm()});
+        // The value alone (the line search's evaluation) as well.
+        Material::Response<dim> v;
+        Material::evaluate(law, F, v, false);
+        worst = std::max(worst,
+                         std::abs(v.psi - ro.psi) /
+                           std::max(std::abs(ro.psi), 1e-300));
+      }
+    return worst;
+  }
+
   void
   check_gent(std::ostream &out)
   {
@@ -351,6 +421,53 @@ main()
                 << e.second << "\n";
     }
   out << "corrupted tangent detected: " << (all_detected ? "yes" : "NO") << "\n";
+
+  // Every law with closed-form invariant derivatives against the same law
+  // differentiated by Sacado (its registered oracle): psi, P and A, 2D and
+  // 3D, at moderate and large strains. The comparison must also reject
+  // a tangent corrupted by 1e-3 in one entry.
+  const double oracle_tolerance = 1e-12;
+  bool         corrupted_rejected = true;
+  for (const auto &law : Material::registered_laws())
+    {
+      if (!law.create_automatic)
+        {
+          out << law.name << ": not written in invariants (no Sacado "
+              << "oracle; checked by finite differences above)\n";
+          continue;
+        }
+      for (const auto &example : law.examples)
+        {
+          ParameterHandler prm;
+          Material::declare_parameters(prm);
+          prm.set("Model", law.name);
+          for (const auto &[key, value] : example.settings)
+            prm.set(key, value);
+          const auto closed = law.create(prm, "test");
+          const auto oracle = law.create_automatic(prm, "test");
+          const std::string label =
+            example.label.empty() ? closed->name() : example.label;
+          unsigned int n2 = 0, n3 = 0;
+          const double d2 = oracle_difference<2>(*closed, *oracle, n2);
+          const double d3 = oracle_difference<3>(*closed, *oracle, n3);
+          out << label << ": closed form equals the Sacado oracle (psi, P, A"
+              << ") in 2D at " << n2 << " and 3D at " << n3
+              << " deformations: "
+              << (d2 < oracle_tolerance && d3 < oracle_tolerance ? "ok" :
+                                                                   "FAIL")
+              << "\n";
+          std::cerr << label << ": closed form against Sacado, largest "
+                    << "relative difference 2D " << d2 << ", 3D " << d3
+                    << "\n";
+          CorruptedTangent corrupted(*closed);
+          unsigned int     n = 0;
+          corrupted_rejected =
+            corrupted_rejected &&
+            oracle_difference<3>(corrupted, *oracle, n) > oracle_tolerance;
+        }
+    }
+  out << "corrupted closed-form tangent rejected by the oracle comparison: "
+      << (corrupted_rejected ? "yes" : "NO") << "\n";
 
   check_gent(out);
 }

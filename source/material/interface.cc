@@ -23,6 +23,26 @@ namespace Signorini
       return F3;
     }
 
+    bool
+    Interface::evaluate_plane_strain(const Tensor<2, 2> &F,
+                                     Response<2>        &response,
+                                     const bool          want_derivatives) const
+    {
+      Response<3> r3;
+      const bool  ok = evaluate(embed(F), r3, want_derivatives);
+      response.psi   = r3.psi;
+      if (ok && want_derivatives)
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              response.P[i][j] = r3.P[i][j];
+              for (unsigned int k = 0; k < 2; ++k)
+                for (unsigned int l = 0; l < 2; ++l)
+                  response.A[i][j][k][l] = r3.A[i][j][k][l];
+            }
+      return ok;
+    }
+
     template <int dim>
     bool
     evaluate(const Interface      &material,
@@ -33,21 +53,7 @@ namespace Signorini
       if constexpr (dim == 3)
         return material.evaluate(F, response, want_derivatives);
       else
-        {
-          Response<3> r3;
-          const bool  ok = material.evaluate(embed(F), r3, want_derivatives);
-          response.psi   = r3.psi;
-          if (ok && want_derivatives)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                {
-                  response.P[i][j] = r3.P[i][j];
-                  for (unsigned int k = 0; k < dim; ++k)
-                    for (unsigned int l = 0; l < dim; ++l)
-                      response.A[i][j][k][l] = r3.A[i][j][k][l];
-                }
-          return ok;
-        }
+        return material.evaluate_plane_strain(F, response, want_derivatives);
     }
 
     template <int dim>

@@ -12,20 +12,20 @@ namespace Signorini
       return true;
     }
 
+    template <int dim>
     bool
-    InvariantBased::evaluate(const Tensor<2, 3> &F,
-                             Response<3>        &response,
-                             const bool          want_derivatives) const
+    InvariantBased::evaluate_blocks(const Tensor<2, 3> &F,
+                                           Response<dim>      &response,
+                                           const bool want_derivatives) const
     {
       const double J = determinant(F);
       if (!(J > 0.) || !std::isfinite(J))
         return false;
 
-      const Tensor<2, 3> C   = transpose(F) * F;
-      const Tensor<2, 3> FC  = F * C;
-      const double       I1  = trace(C);
+      const Tensor<2, 3> C    = transpose(F) * F;
+      const double       I1   = trace(C);
       const double       trC2 = scalar_product(C, C);
-      const double       I2  = 0.5 * (I1 * I1 - trC2);
+      const double       I2   = 0.5 * (I1 * I1 - trC2);
 
       const std::array<double, 3> invariants = {{I1, I2, J}};
       if (!admissible(invariants))
@@ -40,46 +40,83 @@ namespace Signorini
       if (!want_derivatives)
         return true;
 
-      const Tensor<2, 3> Finv = invert(F);
-      const Tensor<2, 3> FinvT = transpose(Finv);
-      const Tensor<2, 3> B    = F * transpose(F);
+      // Only the dim x dim blocks are needed: in plane strain F33 = 1 is
+      // held fixed, so P and A are the in-plane blocks of the 3D ones.
+      const Tensor<2, 3> FC    = F * C;
+      const Tensor<2, 3> FinvT = transpose(invert(F));
+      const Tensor<2, 3> B     = F * transpose(F);
 
-      // First derivatives of the invariants.
-      const std::array<Tensor<2, 3>, 3> G = {
-        {2. * F, 2. * (I1 * F - FC), J * FinvT}};
-
+      // dIa/dF restricted to the block: G0 = 2F, G1 = 2(I1 F - F C),
+      // G2 = J F^-T.
+      std::array<Tensor<2, dim>, 3> G;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            G[0][i][j] = 2. * F[i][j];
+            G[1][i][j] = 2. * (I1 * F[i][j] - FC[i][j]);
+            G[2][i][j] = J * FinvT[i][j];
+          }
       response.P = dpsi[0] * G[0] + dpsi[1] * G[1] + dpsi[2] * G[2];
-
-      Tensor<4, 3> &A = response.A;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          for (unsigned int k = 0; k < 3; ++k)
-            for (unsigned int l = 0; l < 3; ++l)
-              {
-                double value = 0.;
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int b = 0; b < 3; ++b)
-                    value += d2psi[a][b] * G[a][i][j] * G[b][k][l];
-
-                const double dik = (i == k ? 1. : 0.);
-                const double djl = (j == l ? 1. : 0.);
-                // d2 I1
-                value += dpsi[0] * 2. * dik * djl;
-                // d2 I2
-                value += dpsi[1] * 2. *
-                         (2. * F[i][j] * F[k][l] + I1 * dik * djl -
-                          dik * C[l][j] - F[i][l] * F[k][j] - B[i][k] * djl);
-                // d2 J
-                value += dpsi[2] * J *
-                         (Finv[j][i] * Finv[l][k] - Finv[j][k] * Finv[l][i]);
-                A[i][j][k][l] = value;
-              }
-
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
           if (!std::isfinite(response.P[i][j]))
             return false;
+
+      // H_b = sum_a psi_ab G_a: the psi_ab part of A is sum_b H_b (x) G_b
+      // (three rank-one terms; d2psi is symmetric).
+      std::array<Tensor<2, dim>, 3> H;
+      for (unsigned int b = 0; b < 3; ++b)
+        H[b] = d2psi[0][b] * G[0] + d2psi[1][b] * G[1] + d2psi[2][b] * G[2];
+
+      // The second derivatives of the invariants (see the class
+      // documentation), with F^-T = M:
+      //   d2I1 = 2 d_ik d_jl,
+      //   d2I2 = 2(2 F_ij F_kl + I1 d_ik d_jl - d_ik C_lj - F_il F_kj
+      //            - B_ik d_jl),
+      //   d2J  = J (M_ij M_kl - M_il M_kj).
+      const double s1 = 2. * dpsi[0] + 2. * dpsi[1] * I1; // d_ik d_jl
+      const double s2 = 2. * dpsi[1];
+      const double sJ = dpsi[2] / J; // J M = FinvT J; (J M)(J M)/J
+      // With N = J M = G2: sJ (N_ij N_kl - N_il N_kj) = psi_J J (...).
+      const Tensor<2, dim> &N = G[2];
+
+      Tensor<4, dim> &A = response.A;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = i; k < dim; ++k)
+            for (unsigned int l = (k == i ? j : 0); l < dim; ++l)
+              {
+                double value = H[0][i][j] * G[0][k][l] +
+                               H[1][i][j] * G[1][k][l] +
+                               H[2][i][j] * G[2][k][l];
+                value += s2 * (2. * F[i][j] * F[k][l] - F[i][l] * F[k][j]);
+                value += sJ * (N[i][j] * N[k][l] - N[i][l] * N[k][j]);
+                if (i == k)
+                  value -= s2 * C[l][j];
+                if (j == l)
+                  value -= s2 * B[i][k];
+                if (i == k && j == l)
+                  value += s1;
+                A[i][j][k][l] = value;
+                A[k][l][i][j] = value;
+              }
       return true;
+    }
+
+    bool
+    InvariantBased::evaluate(const Tensor<2, 3> &F,
+                             Response<3>        &response,
+                             const bool          want_derivatives) const
+    {
+      return evaluate_blocks<3>(F, response, want_derivatives);
+    }
+
+    bool
+    InvariantBased::evaluate_plane_strain(const Tensor<2, 2> &F,
+                                          Response<2>        &response,
+                                          const bool want_derivatives) const
+    {
+      return evaluate_blocks<2>(embed(F), response, want_derivatives);
     }
   } // namespace Material
 } // namespace Signorini

@@ -51,7 +51,9 @@ namespace Signorini
        * context) and examples(); optional: declare_parameters(prm),
        * supports_incompressible (default false), frame_invariant (default
        * true). A type derived from Interface is used as it is; any other
-       * is a law struct with energy(I1, I2, J), wrapped in InvariantLaw.
+       * is a law struct with energy(I1, I2, J), wrapped in InvariantLaw
+       * (and, if it has invariant_derivatives(), also registered with its
+       * Sacado oracle, create_automatic).
        */
       template <typename Law>
       LawEntry
@@ -78,6 +80,15 @@ namespace Signorini
             return std::make_unique<InvariantLaw<Law>>(
               Law::from_parameters(prm, context));
         };
+        if constexpr (!std::is_base_of_v<Interface, Law>)
+          if constexpr (InvariantLaw<Law>::closed_form_available)
+            entry.create_automatic = [](ParameterHandler  &prm,
+                                        const std::string &context)
+              -> std::unique_ptr<Interface> {
+              return std::make_unique<InvariantLaw<Law>>(
+                Law::from_parameters(prm, context),
+                Differentiation::automatic);
+            };
         entry.examples = Law::examples();
         return entry;
       }

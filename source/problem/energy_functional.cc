@@ -40,12 +40,17 @@ namespace Signorini
       FEValues<dim>                     fe_values;
       FEFaceValues<dim>                 fe_face_values;
       bool                              with_faces;
-      std::vector<Tensor<2, dim>>       grads;
       std::vector<Tensor<1, dim>>       values;
       std::vector<Vector<double>>       loads;
       std::vector<Tensor<1, dim>>       shape_grads;
       std::vector<unsigned int>         shape_component;
-      std::vector<Tensor<2, dim>>       AG;
+      std::vector<unsigned int>         shape_node;
+      std::vector<double>               local_u;
+      std::vector<double>               gT;
+      std::vector<double>               AGt;
+      std::vector<double>               Kt;
+      std::vector<double>               f_int;
+      std::vector<double>               f_ext;
     };
 
     struct Copy
@@ -69,6 +74,49 @@ namespace Signorini
         active     = false;
       }
     };
+    /**
+     * Add JxW grad phi_i : A : grad phi_j to the node blocks s.Kt of the
+     * component pairs c <= d: Kt[p(c,d)][a][b] += JxW sum_JL A[c][J][d][L]
+     * g_a[J] g_b[L], with the scalar gradients g in s.gT[L][a]. N is the
+     * number of nodes if known at compile time (Q1: 2^dim, so that the
+     * loops unroll), else 0.
+     */
+    template <int dim, unsigned int N>
+    void
+    accumulate_hessian(const Tensor<4, dim> &A,
+                       const double          JxW,
+                       Scratch<dim>         &s)
+    {
+      const unsigned int n  = (N > 0 ? N : s.gT.size() / dim);
+      const double      *gT = s.gT.data();
+      unsigned int       pair = 0;
+      for (unsigned int cc = 0; cc < dim; ++cc)
+        for (unsigned int dd = cc; dd < dim; ++dd, ++pair)
+          {
+            double *const K = &s.Kt[pair * n * n];
+            for (unsigned int L = 0; L < dim; ++L)
+              {
+                double *const AGL = &s.AGt[L * n];
+                for (unsigned int a = 0; a < n; ++a)
+                  AGL[a] = 0.;
+                for (unsigned int JJ = 0; JJ < dim; ++JJ)
+                  {
+                    const double  w  = A[cc][JJ][dd][L] * JxW;
+                    const double *gJ = gT + JJ * n;
+                    for (unsigned int a = 0; a < n; ++a)
+                      AGL[a] += w * gJ[a];
+                  }
+                const double *gL = gT + L * n;
+                for (unsigned int a = 0; a < n; ++a)
+                  {
+                    const double x  = AGL[a];
+                    double      *Ka = K + a * n;
+                    for (unsigned int b = 0; b < n; ++b)
+                      Ka[b] += x * gL[b];
+                  }
+              }
+          }
+    }
   } // namespace
 
   template <int dim>
@@ -132,8 +180,20 @@ namespace Signorini
                              std::to_string(cell->material_id())));
       const Material::Interface &material = *material_it->second;
 
-      s.grads.resize(n_q);
-      s.fe_values[displacement].get_function_gradients(u, s.grads);
+      // The element is FE_Q(p)^dim: shape function i is the scalar shape
+      // function of node shape_node[i] in component shape_component[i].
+      const unsigned int n_nodes = dofs_per_cell / dim;
+      s.shape_grads.resize(dofs_per_cell);
+      s.shape_component.resize(dofs_per_cell);
+      s.shape_node.resize(dofs_per_cell);
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const auto ci        = fe.system_to_component_index(i);
+          s.shape_component[i] = ci.first;
+          s.shape_node[i]      = ci.second;
+        }
+      s.local_u.resize(dofs_per_cell);
+      u.extract_subvector_to(c.dofs.begin(), c.dofs.end(), s.local_u.begin());
       if (bc.has_body_force())
         {
           s.values.resize(n_q);
@@ -142,20 +202,35 @@ namespace Signorini
           body_force->vector_value_list(s.fe_values.get_quadrature_points(),
                                        s.loads);
         }
-      s.shape_grads.resize(dofs_per_cell);
-      s.shape_component.resize(dofs_per_cell);
-      s.AG.resize(dofs_per_cell);
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        s.shape_component[i] = fe.system_to_component_index(i).first;
+      // The Hessian is accumulated node block by node block over the
+      // quadrature points, for the component pairs c <= d only (it is
+      // symmetric): Kt[p(c,d)][a][b] = sum_q JxW sum_JL A[c][J][d][L]
+      // g_a[J] g_b[L], with the scalar gradients g stored as gT[L][a] so
+      // that the innermost loops run over contiguous nodes.
+      constexpr unsigned int n_pairs = dim * (dim + 1) / 2;
+      if (want_hessian)
+        {
+          s.gT.resize(dim * n_nodes);
+          s.AGt.resize(dim * n_nodes);
+          s.Kt.assign(n_pairs * n_nodes * n_nodes, 0.);
+        }
 
       Material::Response<dim> response;
-      std::vector<double>     f_int(want_gradient ? dofs_per_cell : 0, 0.);
-      std::vector<double>     f_ext(want_gradient ? dofs_per_cell : 0, 0.);
+      std::vector<double>    &f_int = s.f_int;
+      std::vector<double>    &f_ext = s.f_ext;
+      f_int.assign(want_gradient ? dofs_per_cell : 0, 0.);
+      f_ext.assign(want_gradient ? dofs_per_cell : 0, 0.);
       for (unsigned int q = 0; q < n_q; ++q)
         {
-          const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + s.grads[q];
-          const double         J = determinant(F);
-          c.min_J                = std::min(c.min_J, J);
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              s.shape_grads[i] =
+                s.fe_values.shape_grad_component(i, q, s.shape_component[i]);
+              F[s.shape_component[i]] += s.local_u[i] * s.shape_grads[i];
+            }
+          const double J = determinant(F);
+          c.min_J        = std::min(c.min_J, J);
           if (!Material::evaluate(material, F, response, want_gradient) ||
               !(J > 0.))
             {
@@ -173,10 +248,6 @@ namespace Signorini
             continue;
 
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            s.shape_grads[i] =
-              s.fe_values.shape_grad_component(i, q, s.shape_component[i]);
-
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
             {
               const unsigned int ci = s.shape_component[i];
               f_int[i] += (response.P[ci] * s.shape_grads[i]) * JxW;
@@ -187,22 +258,33 @@ namespace Signorini
 
           if (!want_hessian)
             continue;
-          // K_ij = grad phi_i : A : grad phi_j with one nonzero component
-          // per shape function: AG_i[c][L] = sum_J A[ci][J][c][L] g_i[J].
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              const unsigned int ci = s.shape_component[i];
-              Tensor<2, dim>     ag;
-              for (unsigned int jj = 0; jj < dim; ++jj)
-                for (unsigned int cc = 0; cc < dim; ++cc)
-                  for (unsigned int l = 0; l < dim; ++l)
-                    ag[cc][l] += response.A[ci][jj][cc][l] * s.shape_grads[i][jj];
-              s.AG[i] = ag * JxW;
-            }
+            if (s.shape_component[i] == 0)
+              for (unsigned int L = 0; L < dim; ++L)
+                s.gT[L * n_nodes + s.shape_node[i]] = s.shape_grads[i][L];
+          if (n_nodes == (1u << dim))
+            accumulate_hessian<dim, (1u << dim)>(response.A, JxW, s);
+          else
+            accumulate_hessian<dim, 0>(response.A, JxW, s);
+        }
+      if (want_hessian)
+        {
+          // pair index of (c, d), c <= d, in the order of the loop above
+          auto pair_index = [](const unsigned int c, const unsigned int d) {
+            return c * dim - c * (c - 1) / 2 + (d - c);
+          };
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
-              c.matrix(i, j) +=
-                s.AG[i][s.shape_component[j]] * s.shape_grads[j];
+              {
+                const unsigned int ci = s.shape_component[i];
+                const unsigned int cj = s.shape_component[j];
+                const unsigned int a  = s.shape_node[i];
+                const unsigned int b  = s.shape_node[j];
+                c.matrix(i, j) =
+                  ci <= cj ?
+                    s.Kt[(pair_index(ci, cj) * n_nodes + a) * n_nodes + b] :
+                    s.Kt[(pair_index(cj, ci) * n_nodes + b) * n_nodes + a];
+              }
         }
 
       if (want_gradient)

@@ -5,8 +5,10 @@
 // source/material/registry.cc; its parameters are read in
 // source/material/gent.cc.
 
+#include <signorini/material/invariant_based.h>
 #include <signorini/material/registry.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -81,6 +83,27 @@ namespace Signorini
         const Number x   = (I1b - 3.) / J_m;
         return -0.5 * mu * J_m * log1p_minus(x) +
                0.5 * K * (J - 1.) * (J - 1.);
+      }
+
+      /// By isochoric_volumetric_derivatives() with
+      /// W = -mu J_m/2 ln(1 - x), x = (I1b - 3)/J_m: W1 = mu/(2(1 - x)),
+      /// W11 = mu/(2 J_m (1 - x)^2); U = K/2 (J - 1)^2.
+      void
+      invariant_derivatives(const double I1,
+                            const double /*I2*/,
+                            const double J,
+                            double      &psi,
+                            std::array<double, 3> &dpsi,
+                            std::array<std::array<double, 3>, 3> &d2psi) const
+      {
+        const double a   = std::pow(J, -2. / 3.);
+        const double I1b = a * I1;
+        const double x   = (I1b - 3.) / J_m;
+        const double W1  = 0.5 * mu / (1. - x);
+        psi = -0.5 * mu * J_m * std::log1p(-x) + 0.5 * K * (J - 1.) * (J - 1.);
+        isochoric_volumetric_derivatives(J, a, I1b, 0., W1, 0.,
+                                         W1 / (J_m * (1. - x)), 0., 0.,
+                                         K * (J - 1.), K, dpsi, d2psi);
       }
 
       std::string

@@ -48,6 +48,18 @@ namespace Signorini
                Response<3>        &response,
                const bool          want_derivatives) const = 0;
 
+      /**
+       * The same in plane strain: @p F is the in-plane block of a 3D
+       * deformation gradient with F33 = 1, and P and A are the in-plane
+       * blocks of the 3D quantities (exact, because F33 is held fixed).
+       * The default embeds F and calls evaluate(); a law may override it
+       * to compute only the in-plane blocks.
+       */
+      virtual bool
+      evaluate_plane_strain(const Tensor<2, 2> &F,
+                            Response<2>        &response,
+                            const bool          want_derivatives) const;
+
       /// A name for output, e.g. "neo-Hookean (ln J)".
       virtual std::string
       name() const = 0;
@@ -63,9 +75,9 @@ namespace Signorini
 
     /**
      * Evaluate @p material at the @p dim -dimensional deformation
-     * gradient @p F. For dim == 2 the deformation is plane strain:
-     * F is embedded in 3D with F33 = 1, and P and A are the in-plane
-     * blocks of the 3D quantities (exact, because F33 is held fixed).
+     * gradient @p F. For dim == 2 the deformation is plane strain
+     * (Interface::evaluate_plane_strain()): F is embedded in 3D with
+     * F33 = 1, and P and A are the in-plane blocks of the 3D quantities.
      */
     template <int dim>
     bool

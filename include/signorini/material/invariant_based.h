@@ -40,6 +40,12 @@ namespace Signorini
                Response<3>        &response,
                const bool          want_derivatives) const override;
 
+      /// Only the in-plane blocks of P and A are computed.
+      bool
+      evaluate_plane_strain(const Tensor<2, 2> &F,
+                            Response<2>        &response,
+                            const bool want_derivatives) const override;
+
     protected:
       /**
        * Whether the invariants (I1, I2, J), J > 0, lie in the domain of
@@ -61,25 +67,117 @@ namespace Signorini
                        std::array<double, 3>             &dpsi,
                        std::array<std::array<double, 3>, 3> &d2psi,
                        const bool want_derivatives) const = 0;
+
+    private:
+      /// evaluate() at the 3D @p F, keeping the dim x dim blocks of P, A.
+      template <int dim>
+      bool
+      evaluate_blocks(const Tensor<2, 3> &F,
+                      Response<dim>      &response,
+                      const bool          want_derivatives) const;
     };
 
     /**
-     * Adapter that differentiates a law's energy(I1, I2, J) exactly with
-     * nested forward-mode automatic differentiation (Sacado SFad of SFad:
-     * no truncation error, no heap allocation). A new law only writes
+     * The invariant derivatives of an energy split into an isochoric and a
+     * volumetric part, psi = W(I1b, I2b) + U(J) with I1b = J^(-2/3) I1 and
+     * I2b = J^(-4/3) I2, from the partial derivatives of W with respect to
+     * (I1b, I2b) (@p W1, @p W2, @p W11, @p W12, @p W22) and U'(J), U''(J)
+     * (@p U1, @p U2); @p a = J^(-2/3). With p = dI1b/dJ = -2/3 I1b/J and
+     * q = dI2b/dJ = -4/3 I2b/J:
+     *
+     *   psi_1 = a W1,  psi_2 = a^2 W2,  psi_J = p W1 + q W2 + U',
+     *   psi_11 = a^2 W11,  psi_12 = a^3 W12,  psi_22 = a^4 W22,
+     *   psi_1J = a (p W11 + q W12) - 2/3 a W1/J,
+     *   psi_2J = a^2 (p W12 + q W22) - 4/3 a^2 W2/J,
+     *   psi_JJ = p^2 W11 + 2 p q W12 + q^2 W22
+     *            + 10/9 I1b W1/J^2 + 28/9 I2b W2/J^2 + U''.
+     */
+    inline void
+    isochoric_volumetric_derivatives(
+      const double                          J,
+      const double                          a,
+      const double                          I1b,
+      const double                          I2b,
+      const double                          W1,
+      const double                          W2,
+      const double                          W11,
+      const double                          W12,
+      const double                          W22,
+      const double                          U1,
+      const double                          U2,
+      std::array<double, 3>                &dpsi,
+      std::array<std::array<double, 3>, 3> &d2psi)
+    {
+      const double b = a * a;
+      const double p = -2. / 3. * I1b / J;
+      const double q = -4. / 3. * I2b / J;
+      dpsi[0]        = a * W1;
+      dpsi[1]        = b * W2;
+      dpsi[2]        = p * W1 + q * W2 + U1;
+      d2psi[0][0]    = b * W11;
+      d2psi[0][1] = d2psi[1][0] = a * b * W12;
+      d2psi[1][1]               = b * b * W22;
+      d2psi[0][2] = d2psi[2][0] = a * (p * W11 + q * W12) - 2. / 3. * a * W1 / J;
+      d2psi[1][2] = d2psi[2][1] = b * (p * W12 + q * W22) - 4. / 3. * b * W2 / J;
+      d2psi[2][2] = p * p * W11 + 2. * p * q * W12 + q * q * W22 +
+                    (10. / 9. * I1b * W1 + 28. / 9. * I2b * W2) / (J * J) + U2;
+    }
+
+    /// How InvariantLaw obtains the invariant derivatives of psi.
+    enum class Differentiation
+    {
+      /// The law's own closed form (invariant_derivatives()) if it has
+      /// one, else automatic differentiation.
+      closed_form,
+      /// Nested Sacado numbers on energy(), always (the tests' oracle).
+      automatic
+    };
+
+    /**
+     * Adapter that differentiates a law's energy(I1, I2, J). A new law only
+     * writes
      *
      *   template <typename Number>
      *   Number energy(const Number &I1, const Number &I2, const Number &J) const;
      *
-     * and, if its energy is not defined for every J > 0, also
+     * and its derivatives are then computed exactly with nested
+     * forward-mode automatic differentiation (Sacado SFad of SFad: no
+     * truncation error, no heap allocation). If its energy is not defined
+     * for every J > 0, it also writes
      *
      *   bool admissible(double I1, double I2, double J) const;
      *
-     * which InvariantBased::admissible() then calls.
+     * which InvariantBased::admissible() then calls. A law may also give
+     * its derivatives in closed form, which is several times faster:
+     *
+     *   void invariant_derivatives(double I1, double I2, double J,
+     *                              double &psi, std::array<double, 3> &dpsi,
+     *                              std::array<std::array<double, 3>, 3> &d2psi) const;
+     *
+     * (psi, dpsi/d(I1, I2, J), the symmetric d2psi). It is then used
+     * unless the adapter is built with Differentiation::automatic, which
+     * the tests do to check the closed form against the Sacado
+     * derivatives of energy().
      */
     template <typename Law>
     class InvariantLaw : public InvariantBased
     {
+      template <typename L, typename = void>
+      struct has_closed_form : std::false_type
+      {};
+      template <typename L>
+      struct has_closed_form<
+        L,
+        std::void_t<decltype(std::declval<const L &>().invariant_derivatives(
+          0.,
+          0.,
+          1.,
+          std::declval<double &>(),
+          std::declval<std::array<double, 3> &>(),
+          std::declval<std::array<std::array<double, 3>, 3> &>()))>>
+        : std::true_type
+      {};
+
       template <typename L, typename = void>
       struct has_admissible : std::false_type
       {};
@@ -91,8 +189,15 @@ namespace Signorini
       {};
 
     public:
-      explicit InvariantLaw(const Law &law)
+      /// Whether the law gives its invariant derivatives in closed form.
+      static constexpr bool closed_form_available = has_closed_form<Law>::value;
+
+      explicit InvariantLaw(
+        const Law            &law,
+        const Differentiation differentiation = Differentiation::closed_form)
         : law(law)
+        , use_closed_form(closed_form_available &&
+                          differentiation == Differentiation::closed_form)
       {}
 
       std::string
@@ -135,6 +240,12 @@ namespace Signorini
             psi = law.energy(I[0], I[1], I[2]);
             return;
           }
+        if constexpr (closed_form_available)
+          if (use_closed_form)
+            {
+              law.invariant_derivatives(I[0], I[1], I[2], psi, dpsi, d2psi);
+              return;
+            }
         using Inner = Sacado::Fad::SFad<double, 3>;
         using Outer = Sacado::Fad::SFad<Inner, 3>;
         std::array<Outer, 3> x;
@@ -151,7 +262,8 @@ namespace Signorini
       }
 
     private:
-      Law law;
+      Law  law;
+      bool use_closed_form;
     };
   } // namespace Material
 } // namespace Signorini

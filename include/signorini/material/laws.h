@@ -8,8 +8,10 @@
 // source/material/laws.cc. Linear elasticity is not invariant based and
 // lives in linear_elastic.h, the Gent law in gent.h.
 
+#include <signorini/material/invariant_based.h>
 #include <signorini/material/registry.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -50,6 +52,30 @@ namespace Signorini
         using std::log;
         const Number lnJ = log(J);
         return 0.5 * mu * (I1 - 3.) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+      }
+
+      /// psi_1 = mu/2, psi_J = (lambda ln J - mu)/J,
+      /// psi_JJ = (lambda + mu - lambda ln J)/J^2, the others 0.
+      void
+      invariant_derivatives(const double I1,
+                            const double /*I2*/,
+                            const double J,
+                            double      &psi,
+                            std::array<double, 3> &dpsi,
+                            std::array<std::array<double, 3>, 3> &d2psi) const
+      {
+        const double lnJ = std::log(J);
+        psi     = 0.5 * mu * (I1 - 3.) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
+        // psi_J in the order in which Sacado differentiates energy(), so
+        // that it rounds as its oracle does: in a body that barely strains
+        // (tests/hertz_stiff_block) P = mu F + J psi_J F^-T is a
+        // difference of terms 1e5 times larger, and the last bit of psi_J
+        // decided whether a load step converged within its iterations.
+        const double r = 1. / J;
+        dpsi    = {{0.5 * mu, 0., -mu * r + (0.5 * lambda * r * lnJ +
+                                            0.5 * lambda * lnJ * r)}};
+        d2psi   = {};
+        d2psi[2][2] = (lambda + mu - lambda * lnJ) / (J * J);
       }
 
       std::string
@@ -119,6 +145,31 @@ namespace Signorini
         return psi;
       }
 
+      /// By isochoric_volumetric_derivatives() with
+      /// W = C10 (I1b - 3) + C01 (I2b - 3) + C20 (I1b - 3)^2 and
+      /// U = K/2 (J - 1)^2 (or 0).
+      void
+      invariant_derivatives(const double I1,
+                            const double I2,
+                            const double J,
+                            double      &psi,
+                            std::array<double, 3> &dpsi,
+                            std::array<std::array<double, 3>, 3> &d2psi) const
+      {
+        const double a   = std::pow(J, -2. / 3.);
+        const double I1b = a * I1;
+        const double I2b = a * a * I2;
+        const double U   = include_volumetric ? 0.5 * K * (J - 1.) * (J - 1.) : 0.;
+        const double U1  = include_volumetric ? K * (J - 1.) : 0.;
+        const double U2  = include_volumetric ? K : 0.;
+        psi = C10 * (I1b - 3.) + C01 * (I2b - 3.) +
+              C20 * (I1b - 3.) * (I1b - 3.) + U;
+        isochoric_volumetric_derivatives(J, a, I1b, I2b,
+                                         C10 + 2. * C20 * (I1b - 3.), C01,
+                                         2. * C20, 0., 0., U1, U2,
+                                         dpsi, d2psi);
+      }
+
       std::string
       name() const
       {
@@ -165,6 +216,24 @@ namespace Signorini
         const Number trE  = 0.5 * (I1 - 3.);
         const Number trE2 = 0.25 * (I1 * I1 - 2. * I2 - 2. * I1 + 3.);
         return 0.5 * lambda * trE * trE + mu * trE2;
+      }
+
+      /// psi_1 = lambda tr E/2 + mu (I1 - 1)/2, psi_2 = -mu/2,
+      /// psi_11 = lambda/4 + mu/2, the others 0.
+      void
+      invariant_derivatives(const double I1,
+                            const double I2,
+                            const double /*J*/,
+                            double      &psi,
+                            std::array<double, 3> &dpsi,
+                            std::array<std::array<double, 3>, 3> &d2psi) const
+      {
+        const double trE  = 0.5 * (I1 - 3.);
+        const double trE2 = 0.25 * (I1 * I1 - 2. * I2 - 2. * I1 + 3.);
+        psi   = 0.5 * lambda * trE * trE + mu * trE2;
+        dpsi  = {{0.5 * lambda * trE + 0.5 * mu * (I1 - 1.), -0.5 * mu, 0.}};
+        d2psi = {};
+        d2psi[0][0] = 0.25 * lambda + 0.5 * mu;
       }
 
       std::string

@@ -69,6 +69,16 @@ namespace Signorini
       std::function<std::unique_ptr<Interface>(ParameterHandler &,
                                                const std::string &context)>
         create;
+      /**
+       * For a law written as energy(I1, I2, J) that also gives its
+       * invariant derivatives in closed form: the same law built as
+       * create() does, but differentiated by Sacado
+       * (Differentiation::automatic), the oracle against which the tests
+       * check the closed form. Empty for other laws.
+       */
+      std::function<std::unique_ptr<Interface>(ParameterHandler &,
+                                               const std::string &context)>
+        create_automatic;
       /// At least one example (the tests use them).
       std::vector<Example> examples;
     };
