@@ -9,10 +9,12 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_CrsGraph.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -180,7 +182,7 @@ namespace Signorini
   {
     direct.solver.reset();
     direct.problem.reset();
-    direct.matrix       = nullptr;
+    direct.matrix.reset();
     direct.pattern_hash = 0;
   }
 
@@ -232,18 +234,20 @@ namespace Signorini
     try
       {
         // The symbolic analysis (ordering, elimination tree) depends on the
-        // pattern only: keep it while the matrix object and its pattern are
-        // the same on every rank. Newton's diagonal shifts and new values
-        // need only a new numeric factorisation.
+        // pattern only: keep it while the pattern is the same on every
+        // rank. Newton's diagonal shifts and new values need only a new
+        // numeric factorisation. Amesos keeps a pointer to the matrix (and
+        // uses it even in its destructor), so it gets a copy owned here:
+        // the caller's matrix may be rebuilt or freed at any time.
         const std::size_t hash  = pattern_hash(A);
-        const bool        same  = direct.solver && direct.matrix == &A &&
-                          direct.pattern_hash == hash;
+        const bool        same  = direct.solver && direct.pattern_hash == hash;
         const bool        reuse = Utilities::MPI::min(same ? 1 : 0, comm) == 1;
         if (!reuse)
           {
             forget_analysis();
+            direct.matrix  = std::make_unique<Epetra_CrsMatrix>(A);
             direct.problem = std::make_unique<Epetra_LinearProblem>(
-              const_cast<Epetra_CrsMatrix *>(&A),
+              direct.matrix.get(),
               &x.trilinos_vector(),
               const_cast<Epetra_MultiVector *>(
                 static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
@@ -269,12 +273,22 @@ namespace Signorini
                           std::to_string(error);
                 return false;
               }
-            direct.matrix       = &A;
             direct.pattern_hash = hash;
             ++direct.n_symbolic;
           }
         else
           {
+            // The same pattern, entry by entry (the hash runs over the
+            // entries in their stored order): copy the values.
+            for (int r = 0; r < A.NumMyRows(); ++r)
+              {
+                int     n = 0, n_copy = 0;
+                double *values = nullptr, *copy = nullptr;
+                A.ExtractMyRowView(r, n, values);
+                direct.matrix->ExtractMyRowView(r, n_copy, copy);
+                AssertThrow(n == n_copy, ExcInternalError());
+                std::copy(values, values + n, copy);
+              }
             direct.problem->SetLHS(&x.trilinos_vector());
             direct.problem->SetRHS(const_cast<Epetra_MultiVector *>(
               static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));

@@ -150,11 +150,13 @@ namespace Signorini
                    Teuchos::ParameterList              &list,
                    std::unique_ptr<Epetra_MultiVector> &modes) const;
 
-    /// The direct solver and its symbolic analysis, kept while the matrix
-    /// and its sparsity pattern stay the same (a cache: solve() is const).
+    /// The direct solver and its symbolic analysis, kept while the
+    /// sparsity pattern stays the same (a cache: solve() is const), with
+    /// its own copy of the matrix (Amesos uses the matrix until it is
+    /// destroyed).
     struct DirectState
     {
-      const Epetra_CrsMatrix               *matrix       = nullptr;
+      std::unique_ptr<Epetra_CrsMatrix>     matrix;
       std::size_t                           pattern_hash = 0;
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
