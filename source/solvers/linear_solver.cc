@@ -8,9 +8,13 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Epetra_CrsGraph.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -27,18 +31,25 @@ namespace Signorini
                       "large problems with a positive definite Hessian. "
                       "minres-amg: MINRES (symmetric indefinite systems) with "
                       "the same preconditioner, which itself assumes a "
-                      "definite matrix. AMG uses the displacement "
-                      "translations as near-null-space modes.");
+                      "definite matrix.");
     prm.declare_entry("Direct solver",
                       "auto",
                       Patterns::Selection("auto|Amesos_Klu|Amesos_Mumps"),
                       "The Amesos direct solver. Amesos_Mumps (multifrontal "
                       "with a fill-reducing ordering) is about 2.3x faster "
-                      "than Amesos_Klu on the 51k-DoF Hertz mesh, but "
-                      "Debian's Trilinos links the sequential MUMPS, so it "
-                      "runs on one MPI rank only; KLU gathers the matrix and "
-                      "works with any number of ranks. auto: MUMPS on one "
-                      "rank, KLU on several.");
+                      "than Amesos_Klu on the 51k-DoF Hertz mesh. Debian's "
+                      "Amesos links the parallel MUMPS, but on 2 ranks every "
+                      "factorisation of the Hertz penalty Hessian (3770 "
+                      "DoFs) failed: MUMPS error -9 (workspace too small) on "
+                      "one rank, and with ICNTL(14) = 100 error -10 "
+                      "(singular) on both, where one rank factorises the "
+                      "same matrices; so Amesos_Mumps runs on one MPI rank "
+                      "only. KLU gathers the matrix to one rank and works "
+                      "with any number of ranks. auto: MUMPS on one rank, "
+                      "KLU on several. Either keeps its symbolic analysis "
+                      "(ordering) while the sparsity pattern of the Hessian "
+                      "is unchanged and redoes only the numeric "
+                      "factorisation.");
     prm.declare_entry("MUMPS ordering",
                       "pord",
                       Patterns::Selection("pord|amf|amd|qamd|scotch|auto"),
@@ -68,7 +79,30 @@ namespace Signorini
     prm.declare_entry("AMG smoother sweeps",
                       "2",
                       Patterns::Integer(1, 20),
-                      "Trilinos ML smoother sweeps.");
+                      "Trilinos ML smoother sweeps (the degree of the "
+                      "Chebyshev polynomial).");
+    prm.declare_entry("AMG smoother",
+                      "Chebyshev",
+                      Patterns::Selection(
+                        "Chebyshev|symmetric block Gauss-Seidel"),
+                      "Trilinos ML smoother on every level but the "
+                      "coarsest. Measured on 3D SSNV187 (nu = 0.499, Q1, "
+                      "rigid motions), CG iterations per Newton solve: "
+                      "14 739 DoFs: Chebyshev 97 (2 sweeps), 67 (4), 57 "
+                      "(6); symmetric block Gauss-Seidel (node blocks) 63 "
+                      "(2), 54 (3), 47 (4). 107 811 DoFs: Chebyshev 155 "
+                      "(2), symmetric block Gauss-Seidel 77 (4). A "
+                      "Gauss-Seidel sweep costs more than a Chebyshev "
+                      "one.");
+    prm.declare_entry("AMG near null space",
+                      "rigid motions",
+                      Patterns::Selection("rigid motions|translations"),
+                      "The near null space ML's smoothed aggregation "
+                      "preserves on every level. rigid motions: the dim "
+                      "translations and the rotations (1 in 2D, 3 in 3D) "
+                      "about the centre of the mesh, evaluated at the DoF "
+                      "support points of the reference configuration. "
+                      "translations: the translations only.");
     prm.declare_entry("Fall back to direct",
                       "true",
                       Patterns::Bool(),
@@ -89,8 +123,9 @@ namespace Signorini
       direct_solver = (ranks == 1 ? "Amesos_Mumps" : "Amesos_Klu");
     else if (direct_solver == "Amesos_Mumps" && ranks > 1)
       throw InputError("Solver > Linear solver > Direct solver",
-                       "Amesos_Mumps runs on one MPI rank only (Debian's "
-                       "Trilinos uses the sequential MUMPS); this run has " +
+                       "Amesos_Mumps fails on several MPI ranks (every "
+                       "factorisation of the Hertz Hessian on 2 ranks ends in "
+                       "MUMPS error -9 or -10); this run has " +
                          std::to_string(ranks) + " ranks: use Amesos_Klu or auto");
     const std::string ordering = prm.get("MUMPS ordering");
     mumps_ordering = (ordering == "amd"    ? 0 :
@@ -103,7 +138,11 @@ namespace Signorini
     max_iterations        = prm.get_integer("Maximum iterations");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    smoother              = prm.get("AMG smoother");
     fallback_to_direct    = prm.get_bool("Fall back to direct");
+    null_space = (prm.get("AMG near null space") == "translations" ?
+                    NullSpace::translations :
+                    NullSpace::rigid_motions);
   }
 
   std::string
@@ -124,13 +163,58 @@ namespace Signorini
     : parameters(parameters)
   {}
 
+  LinearSolver::~LinearSolver() = default;
+
   void
-  LinearSolver::set_constant_modes(const std::vector<std::vector<bool>> &modes,
-                                   const bool higher_order_elements)
+  LinearSolver::set_near_null_space(NearNullSpace modes)
   {
-    constant_modes = modes;
-    higher_order   = higher_order_elements;
+    null_space = std::move(modes);
   }
+
+  void
+  LinearSolver::clear()
+  {
+    forget_analysis();
+  }
+
+  void
+  LinearSolver::forget_analysis() const
+  {
+    direct.solver.reset();
+    direct.problem.reset();
+    direct.matrix.reset();
+    direct.pattern_hash = 0;
+  }
+
+  namespace
+  {
+    /// A hash of the locally owned rows' sparsity pattern (global column
+    /// indices), to tell whether a symbolic analysis still applies.
+    std::size_t
+    pattern_hash(const Epetra_CrsMatrix &A)
+    {
+      std::size_t h    = 1469598103934665603ull;
+      const auto  mix = [&h](const long long v) {
+        h ^= static_cast<std::size_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) +
+             (h >> 2);
+      };
+      const Epetra_CrsGraph &graph = A.Graph();
+      const Epetra_BlockMap &cols  = graph.ColMap();
+      const Epetra_BlockMap &rows  = graph.RowMap();
+      mix(graph.NumGlobalRows64());
+      for (int r = 0; r < graph.NumMyRows(); ++r)
+        {
+          int  n       = 0;
+          int *indices = nullptr;
+          graph.ExtractMyRowView(r, n, indices);
+          mix(rows.GID64(r));
+          mix(n);
+          for (int k = 0; k < n; ++k)
+            mix(cols.GID64(indices[k]));
+        }
+      return h;
+    }
+  } // namespace
 
   bool
   LinearSolver::solve_direct(const MatrixType &H,
@@ -139,38 +223,84 @@ namespace Signorini
                              std::string      &message) const
   {
     // Amesos directly rather than through TrilinosWrappers::SolverDirect,
-    // which passes no parameters to the solver: MUMPS' automatic ordering
-    // (ICNTL(7) = 7) picks SCOTCH for larger matrices, whose choices
-    // differ from run to run, so that two runs of one scene drift apart at
-    // round-off level (7330 DoFs: from the 5th Newton iteration) and may
-    // take different load steps ('MUMPS ordering').
+    // which passes no parameters to the solver and redoes the symbolic
+    // analysis at every solve. MUMPS' automatic ordering (ICNTL(7) = 7)
+    // picks SCOTCH for larger matrices, whose choices differ from run to
+    // run, so that two runs of one scene drift apart at round-off level
+    // (7330 DoFs: from the 5th Newton iteration) and may take different
+    // load steps ('MUMPS ordering').
+    const MPI_Comm          comm = H.get_mpi_communicator();
+    const Epetra_CrsMatrix &A    = H.trilinos_matrix();
     try
       {
-        Epetra_LinearProblem problem(
-          const_cast<Epetra_CrsMatrix *>(&H.trilinos_matrix()),
-          &x.trilinos_vector(),
-          const_cast<Epetra_MultiVector *>(
-            static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-        Amesos                             factory;
-        std::unique_ptr<Amesos_BaseSolver> solver(
-          factory.Create(parameters.direct_solver.c_str(), problem));
-        if (!solver)
+        // The symbolic analysis (ordering, elimination tree) depends on the
+        // pattern only: keep it while the pattern is the same on every
+        // rank. Newton's diagonal shifts and new values need only a new
+        // numeric factorisation. Amesos keeps a pointer to the matrix (and
+        // uses it even in its destructor), so it gets a copy owned here:
+        // the caller's matrix may be rebuilt or freed at any time.
+        const std::size_t hash  = pattern_hash(A);
+        const bool        same  = direct.solver && direct.pattern_hash == hash;
+        const bool        reuse = Utilities::MPI::min(same ? 1 : 0, comm) == 1;
+        if (!reuse)
           {
-            message = "direct solver " + parameters.direct_solver +
-                      " is not available in this Trilinos";
-            return false;
+            forget_analysis();
+            direct.matrix  = std::make_unique<Epetra_CrsMatrix>(A);
+            direct.problem = std::make_unique<Epetra_LinearProblem>(
+              direct.matrix.get(),
+              &x.trilinos_vector(),
+              const_cast<Epetra_MultiVector *>(
+                static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+            Amesos factory;
+            direct.solver.reset(
+              factory.Create(parameters.direct_solver.c_str(), *direct.problem));
+            if (!direct.solver)
+              {
+                forget_analysis();
+                message = "direct solver " + parameters.direct_solver +
+                          " is not available in this Trilinos";
+                return false;
+              }
+            Teuchos::ParameterList list;
+            list.sublist("mumps").set("ICNTL(7)", parameters.mumps_ordering);
+            direct.solver->SetParameters(list);
+            const int error = direct.solver->SymbolicFactorization();
+            if (error != 0)
+              {
+                forget_analysis();
+                message = "direct solver " + parameters.direct_solver +
+                          ": symbolic analysis failed with Amesos error " +
+                          std::to_string(error);
+                return false;
+              }
+            direct.pattern_hash = hash;
+            ++direct.n_symbolic;
           }
-        Teuchos::ParameterList list;
-        list.sublist("mumps").set("ICNTL(7)", parameters.mumps_ordering);
-
-        solver->SetParameters(list);
-        int error = solver->SymbolicFactorization();
+        else
+          {
+            // The same pattern, entry by entry (the hash runs over the
+            // entries in their stored order): copy the values.
+            for (int r = 0; r < A.NumMyRows(); ++r)
+              {
+                int     n = 0, n_copy = 0;
+                double *values = nullptr, *copy = nullptr;
+                A.ExtractMyRowView(r, n, values);
+                direct.matrix->ExtractMyRowView(r, n_copy, copy);
+                AssertThrow(n == n_copy, ExcInternalError());
+                std::copy(values, values + n, copy);
+              }
+            direct.problem->SetLHS(&x.trilinos_vector());
+            direct.problem->SetRHS(const_cast<Epetra_MultiVector *>(
+              static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+          }
+        int error = direct.solver->NumericFactorization();
         if (error == 0)
-          error = solver->NumericFactorization();
-        if (error == 0)
-          error = solver->Solve();
+          error = direct.solver->Solve();
         if (error != 0)
           {
+            // A failed factorisation may leave the solver in any state:
+            // analyse again next time.
+            forget_analysis();
             message = "direct solver " + parameters.direct_solver +
                       " failed with Amesos error " + std::to_string(error);
             return false;
@@ -178,6 +308,7 @@ namespace Signorini
       }
     catch (const std::exception &e)
       {
+        forget_analysis();
         message = std::string("direct solver failed: ") + e.what();
         return false;
       }
@@ -195,6 +326,47 @@ namespace Signorini
     return true;
   }
 
+  void
+  LinearSolver::amg_parameters(const MatrixType                    &H,
+                               Teuchos::ParameterList              &list,
+                               std::unique_ptr<Epetra_MultiVector> &modes) const
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = null_space.higher_order;
+    data.smoother_sweeps       = parameters.smoother_sweeps;
+    data.aggregation_threshold = parameters.aggregation_threshold;
+    data.smoother_type         = parameters.smoother.c_str();
+    // deal.II's defaults for smoothed aggregation, without a null space:
+    // it takes boolean masks only, which cannot express rotations.
+    data.set_parameters(list, modes, H);
+
+    const Epetra_Map  &map = H.trilinos_matrix().OperatorDomainMap();
+    const unsigned int n_modes =
+      parameters.null_space == Parameters::NullSpace::rigid_motions ?
+        null_space.modes.size() :
+        std::min<std::size_t>(null_space.n_translations, null_space.modes.size());
+    if (n_modes == 0)
+      return;
+    AssertThrow(null_space.owned.n_elements() ==
+                  static_cast<types::global_dof_index>(map.NumMyElements()),
+                ExcMessage("The near null space does not match the matrix."));
+    modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
+    for (int row = 0; row < map.NumMyElements(); ++row)
+      {
+        const auto k = null_space.owned.index_within_set(map.GID64(row));
+        for (unsigned int m = 0; m < n_modes; ++m)
+          (*modes)[m][row] = null_space.modes[m][k];
+      }
+    list.set("null space: type", "pre-computed");
+    list.set("null space: dimension", static_cast<int>(n_modes));
+    list.set("null space: vectors", modes->Values());
+    // Aggregate whole nodes: the rotations are then resolved on every
+    // aggregate (ML needs at least as many DoFs per aggregate as modes).
+    if (null_space.dofs_per_node > 1)
+      list.set("PDE equations", static_cast<int>(null_space.dofs_per_node));
+  }
+
   bool
   LinearSolver::solve(const MatrixType &H,
                       VectorType       &x,
@@ -207,18 +379,17 @@ namespace Signorini
     if (parameters.type == Parameters::Type::direct)
       return solve_direct(H, x, b, message);
 
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = higher_order;
-    data.smoother_sweeps       = parameters.smoother_sweeps;
-    data.aggregation_threshold = parameters.aggregation_threshold;
-    data.constant_modes        = constant_modes;
-    SolverControl control(parameters.max_iterations,
+    TrilinosWrappers::PreconditionAMG   amg;
+    SolverControl                       control(parameters.max_iterations,
                           parameters.relative_tolerance * b.l2_norm());
     try
       {
-        amg.initialize(H, data);
+        {
+          Teuchos::ParameterList              list;
+          std::unique_ptr<Epetra_MultiVector> modes;
+          amg_parameters(H, list, modes);
+          amg.initialize(H, list);
+        }
         if (parameters.type == Parameters::Type::cg_amg)
           {
             SolverCG<VectorType> cg(control);

@@ -4,7 +4,9 @@
 #include <signorini/solvers/penalty_step.h>
 #include <signorini/solvers/step_solver.h>
 
+#include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 
 namespace Signorini
 {
@@ -22,15 +24,112 @@ namespace Signorini
     , linear_solver(parameters.solver.linear)
   {}
 
+  namespace
+  {
+    /**
+     * The rigid motions of the scene's mesh at the support points of the
+     * locally owned DoFs (reference configuration): the dim translations,
+     * then the rotations about the centre of the support points, scaled by
+     * the scene's size so that they are of the order of the translations.
+     */
+    template <int dim>
+    NearNullSpace
+    rigid_motions(const Scene<dim> &scene)
+    {
+      const FiniteElement<dim> &fe      = *scene.fe;
+      const IndexSet           &owned   = scene.locally_owned;
+      const std::size_t         n_owned = owned.n_elements();
+
+      NearNullSpace result;
+      result.owned          = owned;
+      result.n_translations = dim;
+      result.higher_order   = fe.degree > 1;
+
+      std::vector<Point<dim>> points(n_owned);
+      std::vector<int>        component(n_owned, -1);
+      FEValues<dim>           fe_values(*scene.mapping,
+                              fe,
+                              Quadrature<dim>(fe.get_unit_support_points()),
+                              update_quadrature_points);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : scene.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (owned.is_element(dofs[i]))
+                {
+                  const auto k = owned.index_within_set(dofs[i]);
+                  if (component[k] < 0)
+                    {
+                      component[k] = fe.system_to_component_index(i).first;
+                      points[k]    = fe_values.quadrature_point(i);
+                    }
+                }
+          }
+
+      // The centre: the mean of all support points (the same on any number
+      // of ranks).
+      std::vector<double> sum(dim + 1, 0.);
+      for (std::size_t k = 0; k < n_owned; ++k)
+        if (component[k] == 0)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              sum[d] += points[k][d];
+            sum[dim] += 1.;
+          }
+      Utilities::MPI::sum(sum, scene.dof_handler.get_communicator(), sum);
+      Point<dim> centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = sum[dim] > 0. ? sum[d] / sum[dim] : 0.;
+      const double scale = scene.size > 0. ? 1. / scene.size : 1.;
+
+      const unsigned int n_rotations = dim == 2 ? 1 : 3;
+      result.modes.assign(dim + n_rotations, std::vector<double>(n_owned, 0.));
+      bool node_by_node = true;
+      for (std::size_t k = 0; k < n_owned; ++k)
+        {
+          const int c = component[k];
+          Assert(c >= 0, ExcInternalError());
+          const Tensor<1, dim> r = scale * (points[k] - centre);
+          result.modes[c][k]     = 1.;
+          if (dim == 2)
+            // rotation about z: (-y, x)
+            result.modes[2][k] = (c == 0 ? -r[1] : r[0]);
+          else
+            {
+              // rotation about the axis a: a x r, component c
+              for (unsigned int a = 0; a < 3; ++a)
+                {
+                  const unsigned int c1 = (a + 1) % 3, c2 = (a + 2) % 3;
+                  result.modes[dim + a][k] =
+                    (c == static_cast<int>(c1) ? -r[c2] :
+                     c == static_cast<int>(c2) ? r[c1] :
+                                                 0.);
+                }
+            }
+          // ML's "PDE equations" needs the DoFs of a node consecutive and
+          // ordered by component, which deal.II's numbering of FE_Q^dim
+          // gives: check it rather than assume it.
+          if (owned.nth_index_in_set(k) % dim != static_cast<unsigned int>(c) ||
+              (c > 0 && points[k].distance(points[k - 1]) >
+                          1e-12 * (scene.size > 0. ? scene.size : 1.)))
+            node_by_node = false;
+        }
+      node_by_node =
+        Utilities::MPI::min(node_by_node ? 1 : 0,
+                            scene.dof_handler.get_communicator()) == 1;
+      result.dofs_per_node = node_by_node ? dim : 1;
+      return result;
+    }
+  } // namespace
+
   template <int dim>
   void
   StepSolver<dim>::setup()
   {
-    std::vector<std::vector<bool>> modes;
-    DoFTools::extract_constant_modes(scene.dof_handler,
-                                     ComponentMask(dim, true),
-                                     modes);
-    linear_solver.set_constant_modes(modes, scene.fe->degree > 1);
+    linear_solver.set_near_null_space(rigid_motions(scene));
   }
 
   template <int dim>

@@ -2,22 +2,52 @@
 
 #include <signorini/types.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
+
+class Amesos_BaseSolver;
+class Epetra_CrsMatrix;
+class Epetra_LinearProblem;
+class Epetra_MultiVector;
+namespace Teuchos
+{
+  class ParameterList;
+}
 
 namespace Signorini
 {
   using namespace dealii;
 
   /**
+   * The near null space of an elasticity operator for algebraic multigrid:
+   * the rigid motions evaluated at the DoF support points, for the locally
+   * owned DoFs (in the order of the locally owned index set): first the
+   * @p n_translations translations, then the rotations (1 in 2D, 3 in 3D).
+   */
+  struct NearNullSpace
+  {
+    IndexSet                         owned;
+    std::vector<std::vector<double>> modes;
+    unsigned int                     n_translations = 0;
+    /// DoFs per node when they are numbered node by node (the DoFs of a
+    /// node consecutive, component c at offset c); 1 otherwise.
+    unsigned int                     dofs_per_node = 1;
+    bool                             higher_order  = false;
+  };
+
+  /**
    * Solves the Newton systems H d = b. "direct" factorises H with Trilinos
-   * Amesos (KLU by default, MUMPS on request: both work with MPI);
-   * "cg-amg" and "minres-amg" use a Krylov method preconditioned by
-   * Trilinos ML algebraic multigrid built with the displacement components
-   * as near-null-space (constant) modes. When a Krylov solve does not
-   * converge the solver falls back to the direct one if allowed.
+   * Amesos (MUMPS or KLU, both with MPI) and keeps the symbolic analysis
+   * while the sparsity pattern of H is unchanged; "cg-amg" and
+   * "minres-amg" use a Krylov method preconditioned by Trilinos ML
+   * algebraic multigrid with the rigid motions as near null space. When a
+   * Krylov solve does not converge the solver falls back to the direct one
+   * if allowed.
    */
   class LinearSolver
   {
@@ -30,6 +60,12 @@ namespace Signorini
         cg_amg,
         minres_amg
       };
+      /// The near null space given to AMG.
+      enum class NullSpace
+      {
+        translations,
+        rigid_motions
+      };
       Type         type = Type::direct;
       std::string  direct_solver = "Amesos_Klu"; // "auto" is resolved when parsed
       /// MUMPS' fill-reducing ordering, as its ICNTL(7) code (also given
@@ -39,7 +75,10 @@ namespace Signorini
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;
       unsigned int smoother_sweeps       = 2;
+      /// ML's "smoother: type".
+      std::string  smoother              = "Chebyshev";
       bool         fallback_to_direct    = true;
+      NullSpace    null_space            = NullSpace::rigid_motions;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -56,11 +95,26 @@ namespace Signorini
     };
 
     explicit LinearSolver(const Parameters &parameters);
+    ~LinearSolver();
 
-    /// Near-null-space modes for AMG (one boolean mask per mode).
+    /// The near null space for AMG (see NearNullSpace).
     void
-    set_constant_modes(const std::vector<std::vector<bool>> &modes,
-                       const bool                            higher_order);
+    set_near_null_space(NearNullSpace null_space);
+
+    /**
+     * Forget the direct solver's symbolic analysis. It is also redone
+     * whenever the matrix or its sparsity pattern changes, which solve()
+     * detects itself; this only frees the memory.
+     */
+    void
+    clear();
+
+    /// How many symbolic analyses the direct solver has done so far.
+    unsigned int
+    n_symbolic_factorizations() const
+    {
+      return direct.n_symbolic;
+    }
 
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
@@ -86,8 +140,31 @@ namespace Signorini
                  const VectorType &b,
                  std::string      &message) const;
 
-    Parameters                     parameters;
-    std::vector<std::vector<bool>> constant_modes;
-    bool                           higher_order = false;
+    void
+    forget_analysis() const;
+
+    /// ML's parameters for @p H, with the near null space in @p modes
+    /// (which must live until the preconditioner is built).
+    void
+    amg_parameters(const MatrixType                    &H,
+                   Teuchos::ParameterList              &list,
+                   std::unique_ptr<Epetra_MultiVector> &modes) const;
+
+    /// The direct solver and its symbolic analysis, kept while the
+    /// sparsity pattern stays the same (a cache: solve() is const), with
+    /// its own copy of the matrix (Amesos uses the matrix until it is
+    /// destroyed).
+    struct DirectState
+    {
+      std::unique_ptr<Epetra_CrsMatrix>     matrix;
+      std::size_t                           pattern_hash = 0;
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    solver;
+      unsigned int                          n_symbolic = 0;
+    };
+
+    Parameters          parameters;
+    NearNullSpace       null_space;
+    mutable DirectState direct;
   };
 } // namespace Signorini
