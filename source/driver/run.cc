@@ -501,6 +501,11 @@ namespace Signorini
       return in_tolerance ? success : out_of_tolerance;
     };
 
+    // A run stops cleanly on SIGINT/SIGTERM from here on (a signal during
+    // its setup stops it at its first load step, with a checkpoint at t = 0).
+    if (!study)
+      Interruption::install();
+
     if (restart)
       {
         const std::string directory = args[0];
@@ -544,7 +549,6 @@ namespace Signorini
           // The run's output directory holds checkpoints/checkpoint-N.
           prm.set("Output directory",
                   std::filesystem::path(folder).parent_path().parent_path().string());
-          Interruption::install();
           const Report report =
             (header.dimension == 2 ? run_scene<2>(prm, file, quiet, folder) :
                                      run_scene<3>(prm, file, quiet, folder));
@@ -557,7 +561,6 @@ namespace Signorini
       read_parameter_file(prm, file);
       if (study)
         return Study::run(file, prm, MPI_COMM_WORLD);
-      Interruption::install();
       const unsigned int dim = prm.get_integer("Dimension");
       const Report       report =
         (dim == 2 ? run_scene<2>(prm, file, quiet) : run_scene<3>(prm, file, quiet));
