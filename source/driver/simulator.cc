@@ -268,6 +268,29 @@ namespace Signorini
   }
 
   template <int dim>
+  std::map<std::string, double>
+  Simulator<dim>::run_times(const Timer &run_timer) const
+  {
+    auto       times          = phase_times();
+    const auto previous_setup = previous_times.find("setup");
+    times["setup"] =
+      (previous_setup == previous_times.end() ? 0. : previous_setup->second) +
+      setup_seconds;
+    times["total"] = elapsed(run_timer);
+    return times;
+  }
+
+  template <int dim>
+  Report
+  Simulator<dim>::resumed_report() const
+  {
+    Report r = resume.report;
+    r.steps.assign(report.steps.begin(), report.steps.begin() + resume.n_steps);
+    r.cycles.assign(report.cycles.begin(), report.cycles.begin() + resume.n_cycles);
+    return r;
+  }
+
+  template <int dim>
   void
   Simulator<dim>::refinement_cycles(const Timer &run_timer)
   {
@@ -372,7 +395,19 @@ namespace Signorini
     resume.mesh_ready    = mesh_ready;
     resume.mesh_as_built = mesh_as_built;
     resume.refined_cells = refined_cells;
-    resume.report        = report;
+    // The step and cycle records only grow from here: keep their counts,
+    // not a copy of them at every step.
+    resume.n_steps  = report.steps.size();
+    resume.n_cycles = report.cycles.size();
+    {
+      std::vector<Report::Step>  steps;
+      std::vector<Report::Cycle> cycles;
+      std::swap(steps, report.steps);
+      std::swap(cycles, report.cycles);
+      resume.report = report;
+      std::swap(steps, report.steps);
+      std::swap(cycles, report.cycles);
+    }
     resume.solution      = VectorType(scene->solution);
     resume.pattern       = VectorType(scene->pattern_state);
     {
@@ -448,12 +483,8 @@ namespace Signorini
     header.parameter_file = report.parameter_file;
     header.parameters     = used_parameters;
     header.mesh_as_built  = resume.mesh_as_built;
-    Report saved          = resume.report;
-    saved.timing          = phase_times();
-    saved.timing["setup"] =
-      (previous_times.count("setup") ? previous_times.at("setup") : 0.) +
-      setup_seconds;
-    saved.timing["total"] = elapsed(run_timer);
+    Report saved          = resumed_report();
+    saved.timing          = run_times(run_timer);
     {
       std::ofstream out(Checkpoint::state_file(folder,
                                                Utilities::MPI::this_mpi_process(comm)),
@@ -692,7 +723,7 @@ namespace Signorini
         // Back to the last converged state: its record, and a checkpoint
         // of it.
         const std::string during = activity;
-        report                   = resume.report;
+        report                   = resumed_report();
         report.status            = "interrupted";
         report.interrupt_signal  = e.signal_number;
         report.interrupted_during = during;
@@ -715,11 +746,7 @@ namespace Signorini
       report.peak_memory_mb =
         Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024., comm);
     }
-    const double previous_setup =
-      previous_times.count("setup") ? previous_times.at("setup") : 0.;
-    report.timing          = phase_times();
-    report.timing["setup"] = previous_setup + setup_seconds;
-    report.timing["total"] = elapsed(run_timer);
+    report.timing = run_times(run_timer);
     summary();
     if (root)
       write_progress(output_directory, report.status, report.final_time,

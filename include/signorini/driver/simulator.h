@@ -96,6 +96,16 @@ namespace Signorini
     double
     elapsed(const Timer &run_timer) const;
 
+    /// phase_times() with "setup" and "total": the report's timing
+    /// (collective).
+    std::map<std::string, double>
+    run_times(const Timer &run_timer) const;
+
+    /// The report of the last resume point: its record with the steps
+    /// and cycles converged by then.
+    Report
+    resumed_report() const;
+
     /// Record the current state as the one a checkpoint saves (after
     /// every converged step and every new mesh).
     void
@@ -118,7 +128,8 @@ namespace Signorini
       bool         mesh_ready = false;   // a refined mesh, not yet solved
       bool         mesh_as_built = true; // no refinement cycle yet
       unsigned int refined_cells = 0;    // flagged to make that mesh
-      Report       report;
+      Report       report;               // without steps and cycles
+      std::size_t  n_steps = 0, n_cycles = 0; // of report's, at this point
       VectorType   solution;             // locally owned
       VectorType   pattern;              // locally relevant
       std::string  parts;                // this rank's model, solver, output
