@@ -74,6 +74,19 @@ namespace Signorini
                       "stage's solution with the square root of its "
                       "jump in mu, at most this many times per load step; "
                       "then the load step fails (and is cut).");
+    prm.declare_entry("Stage predictor",
+                      "tangent",
+                      Patterns::Selection("tangent|extrapolation|none"),
+                      "How a stage after the first starts. tangent: from "
+                      "the last stage's solution moved along du/dmu (one "
+                      "linear solve with the Hessian there), to first "
+                      "order in mu^(-1/2), in which a node's penetration "
+                      "is linear. extrapolation: from the last two "
+                      "stages' solutions, linearly in mu^(-1/2) (no "
+                      "solve; the second stage starts from the first's "
+                      "solution). none: from the last stage's solution. "
+                      "A predicted start that is inadmissible or has a "
+                      "larger G_mu than the last solution is not used.");
     prm.declare_entry("Restart each load step",
                       "false",
                       Patterns::Bool(),
@@ -106,6 +119,14 @@ namespace Signorini
     max_penalty_ratio     = prm.get_double("Maximum penalty ratio");
     stage_iteration_target = prm.get_integer("Stage iteration target");
     max_stage_retries      = prm.get_integer("Maximum stage retries");
+    {
+      const std::string predictor = prm.get("Stage predictor");
+      stage_predictor = predictor == "tangent" ?
+                          StagePredictor::tangent :
+                          predictor == "extrapolation" ?
+                          StagePredictor::extrapolation :
+                          StagePredictor::none;
+    }
     if (!(max_penalty_ratio >= 1.) || !std::isfinite(max_penalty_ratio))
       throw InputError("Solver > Penalty > Maximum penalty ratio",
                        "must be a finite number >= 1, got " +
@@ -127,6 +148,7 @@ namespace Signorini
   ContinuationResult
   penalty_continuation(const ContinuationParameters    &parameters,
                        const StageSolver               &solve_stage,
+                       const StageTangent              &stage_tangent,
                        const EnergyFunctional<dim>     &energy,
                        Contact::PenaltyTerm<dim>       &contact,
                        const double                     time,
@@ -148,24 +170,63 @@ namespace Signorini
     VectorType   last(u), before_last(u);
     double       last_mu = 0., last_r = 0., before_last_r = 0.;
     unsigned int n_converged = 0;
+    // The tangent du/dmu at the last converged stage (kept for a retry
+    // from the same stage).
+    VectorType tangent;
+    double     tangent_mu = 0.;
+    using Predictor       = ContinuationParameters::StagePredictor;
+    // Moves u (the last stage's solution) to a predicted start for the
+    // stage at mu, if that start is admissible and lowers G_mu.
+    const auto predict_stage = [&](VectorType &u, const double mu) {
+      VectorType start;
+      if (parameters.stage_predictor == Predictor::tangent && stage_tangent)
+        {
+          if (tangent_mu != last_mu)
+            {
+              tangent = last;
+              if (!stage_tangent(last_mu, tangent))
+                return;
+              tangent_mu = last_mu;
+            }
+          // First order in r = mu^(-1/2): du = du/dmu dmu/dr (r - r_k)
+          // = 2 mu_k (1 - sqrt(mu_k / mu)) du/dmu.
+          start = last;
+          start.add(2. * last_mu * (1. - std::sqrt(last_mu / mu)), tangent);
+        }
+      else if (parameters.stage_predictor != Predictor::none &&
+               n_converged >= 2)
+        {
+          const double factor =
+            (1. / std::sqrt(mu) - last_r) / (last_r - before_last_r);
+          start = last;
+          start.add(factor, last);
+          start.add(-factor, before_last);
+        }
+      else
+        return;
+      Contact::PenaltyObjective<dim> check(energy, contact, time, mu);
+      ghosted                = start;
+      const Evaluation trial = check.evaluate(ghosted, constraints, nullptr, nullptr);
+      if (!trial.admissible)
+        return;
+      ghosted                = u;
+      const Evaluation here  = check.evaluate(ghosted, constraints, nullptr, nullptr);
+      if (trial.value < here.value)
+        {
+          u = start;
+          progress << "    start predicted ("
+                   << (parameters.stage_predictor == Predictor::tangent ?
+                         "tangent" :
+                         "extrapolation")
+                   << ")" << std::endl;
+        }
+    };
     while (n_converged < parameters.max_stages)
       {
         if (n_converged >= 1)
           {
             u = last;
-            if (n_converged >= 2)
-              {
-                const double factor =
-                  (1. / std::sqrt(mu) - last_r) / (last_r - before_last_r);
-                VectorType start(last);
-                start.add(factor, last);
-                start.add(-factor, before_last);
-                ghosted = start;
-                Contact::PenaltyObjective<dim> check(energy, contact, time, mu);
-                if (check.evaluate(ghosted, constraints, nullptr, nullptr)
-                      .admissible)
-                  u = start;
-              }
+            predict_stage(u, mu);
           }
         progress << "  stage " << result.stages.size() + 1
                  << ": mu = " << std::scientific << std::setprecision(3)
@@ -270,12 +331,14 @@ namespace Signorini
 
   template ContinuationResult
   penalty_continuation<2>(const ContinuationParameters &, const StageSolver &,
+                          const StageTangent &,
                           const EnergyFunctional<2> &, Contact::PenaltyTerm<2> &,
                           const double, const double, const double,
                           const AffineConstraints<double> &, VectorType &,
                           VectorType &, ConditionalOStream &);
   template ContinuationResult
   penalty_continuation<3>(const ContinuationParameters &, const StageSolver &,
+                          const StageTangent &,
                           const EnergyFunctional<3> &, Contact::PenaltyTerm<3> &,
                           const double, const double, const double,
                           const AffineConstraints<double> &, VectorType &,

@@ -87,6 +87,32 @@ namespace Signorini
       return newton.minimize(stage, scene.homogeneous_constraints, u,
                              scene.solution_ghosted, scene.hessian, scene.rhs);
     };
+    // du/dmu = -H^{-1} grad P at a converged stage, for the stage
+    // predictor (Newton stages only: it uses their Hessian and solver).
+    StageTangent stage_tangent = [&](const double mu, VectorType &u) {
+      Contact::PenaltyObjective<dim> stage(energy, term, time, mu, rebuild);
+      stage.timer            = &this->timer;
+      scene.solution_ghosted = u;
+      {
+        TimerOutput::Scope scope(this->timer, "assembly");
+        if (!stage.evaluate(scene.solution_ghosted,
+                            scene.homogeneous_constraints, &scene.rhs,
+                            &scene.hessian)
+               .admissible)
+          return false;
+        scene.rhs = 0.;
+        term.add_penalty(scene.solution_ghosted, 1.,
+                         scene.homogeneous_constraints, &scene.rhs, nullptr);
+      }
+      TimerOutput::Scope scope(this->timer, "linear solve");
+      LinearSolver::Info info;
+      std::string        reason;
+      u = 0.;
+      if (!this->linear_solver.solve(scene.hessian, u, scene.rhs, info, reason))
+        return false;
+      scene.homogeneous_constraints.distribute(u);
+      return true;
+    };
     if (ipopt)
       {
         const AffineConstraints<double> target =
@@ -109,7 +135,8 @@ namespace Signorini
         };
       }
     const ContinuationResult result =
-      penalty_continuation(continuation, solve_stage, energy, term, time,
+      penalty_continuation(continuation, solve_stage, stage_tangent, energy,
+                           term, time,
                            mu_start, mu0, scene.homogeneous_constraints,
                            scene.solution, scene.solution_ghosted,
                            this->progress);

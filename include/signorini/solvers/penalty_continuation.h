@@ -40,6 +40,14 @@ namespace Signorini
     double       max_penalty_ratio     = 1e14; // cap of mu / mu_0
     unsigned int stage_iteration_target = 20;
     unsigned int max_stage_retries      = 3;
+    // How the next stage starts: the tangent du/dmu at the converged
+    // stage (one linear solve), or the extrapolation from two stages.
+    enum class StagePredictor
+    {
+      tangent,
+      extrapolation,
+      none
+    } stage_predictor = StagePredictor::tangent;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -89,6 +97,14 @@ namespace Signorini
     std::function<NewtonMinimizer::Statistics(const double mu, VectorType &u)>;
 
   /**
+   * The tangent of the stage solutions: replaces @p u (the converged
+   * minimiser of G_mu, locally owned) by du/dmu = -H^{-1} grad P, H the
+   * Hessian of G_mu at @p u. Returns false if the linear solve fails
+   * (@p u is then undefined). Empty: no tangent predictor.
+   */
+  using StageTangent = std::function<bool(const double mu, VectorType &u)>;
+
+  /**
    * Run the continuation for one load step at @p time from @p u, the
    * first stage with @p mu_start, each stage solved by @p solve_stage.
    * @p mu_reference is the scene's mu_0: no stage goes beyond
@@ -112,6 +128,7 @@ namespace Signorini
   ContinuationResult
   penalty_continuation(const ContinuationParameters    &parameters,
                        const StageSolver               &solve_stage,
+                       const StageTangent              &stage_tangent,
                        const EnergyFunctional<dim>     &energy,
                        Contact::PenaltyTerm<dim>       &contact,
                        const double                     time,

@@ -1,0 +1,76 @@
+// The start of each penalty stage (Solver > Penalty > Stage predictor) on
+// Hertz on an elastic block (prm/hertz_block.prm, two bodies, nodal form)
+// and on the rigid plane (prm/default.prm with 3 local refinements):
+// - tangent (du/dmu from one linear solve, to first order in mu^(-1/2)),
+//   extrapolation (from the last two stages) and none all end at the same
+//   answer: contact force, a and p0 to 1e-5 relative (the stages may end
+//   at slightly different mu, so not to round-off);
+// - the tangent start saves Newton iterations: on the block at most 0.8
+//   times those of 'none' (measured 35 against 58), on the rigid plane no
+//   more than 'none'.
+
+#include "run_output.h"
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+using RunOutput::verdict;
+
+namespace
+{
+  std::string
+  predictor(const std::string &which)
+  {
+    return "subsection Solver\n  subsection Penalty\n    set Stage predictor = " +
+           which + "\n  end\nend\n";
+  }
+
+  double
+  iterations(const std::string &folder)
+  {
+    return RunOutput::first_number(RunOutput::summary_numbers(folder + "/summary.json"),
+                                   "newton iterations");
+  }
+
+  bool
+  same_answer(const std::string &a, const std::string &b)
+  {
+    bool same = true;
+    for (const char *q : {"contact_force_y", "hertz_a", "hertz_p0"})
+      {
+        const double x = RunOutput::summary_quantity(a + "/summary.json", q);
+        const double y = RunOutput::summary_quantity(b + "/summary.json", q);
+        same &= std::isfinite(x) && std::abs(x - y) <= 1e-5 * std::abs(x);
+      }
+    return same;
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  const std::string coarse = "subsection Mesh\n  set Local refinements = 3\nend\n";
+  for (const std::string scene : {"hertz_block", "default"})
+    {
+      const std::string extra = scene == "default" ? coarse : "";
+      bool              ran   = true;
+      for (const std::string which : {"tangent", "extrapolation", "none"})
+        ran &= RunOutput::run_scene(scene + "_" + which, scene + ".prm",
+                                    extra + predictor(which)) == 0;
+      out << scene << ": three runs converged: " << verdict(ran) << "\n";
+      if (!ran)
+        continue;
+      out << scene << ": tangent and none give the same answer to 1e-5: "
+          << verdict(same_answer(scene + "_tangent", scene + "_none")) << "\n"
+          << scene << ": extrapolation and none give the same answer to 1e-5: "
+          << verdict(same_answer(scene + "_extrapolation", scene + "_none")) << "\n";
+      const double tangent = iterations(scene + "_tangent");
+      const double none    = iterations(scene + "_none");
+      const double limit   = scene == "hertz_block" ? 0.8 : 1.;
+      out << scene << ": tangent needs at most " << limit
+          << " x the Newton iterations of none: "
+          << verdict(tangent > 0. && tangent <= limit * none) << "\n";
+    }
+}
