@@ -67,6 +67,9 @@ namespace Signorini
 
     std::string  format   = "vtu";
     unsigned int interval = 1;
+    /// Output > Compression: zlib level of the VTU data.
+    DataOutBase::VtkFlags::ZlibCompressionLevel compression =
+      DataOutBase::VtkFlags::best_speed;
     /// Output > Verbosity.
     enum class Verbosity
     {
