@@ -1,0 +1,181 @@
+#!/usr/bin/env python3
+"""Rigid Hertz against the FreeFEM+IPOPT peer model, side by side.
+
+The peer (../shared/peers/freefem, not part of the project) is an
+independent FreeFEM script of the same scene: the neo-Hookean half disk on
+the rigid plane, u_x = 0 on the whole top edge, the full load in one step,
+minimised by IPOPT. prm/hertz_peer.prm is our copy of that scene. For each
+pair of sizes (a peer mesh level, our global and local refinements of about
+the same DoFs), the two programs are run in turn, alternating, `--runs`
+times each, as whole processes (wall time of the process: start-up, mesh,
+solve and output); the table gives the medians, their ratio, the solver
+iterations and p0 against the converged model (p0 = 10.92,
+doc/performance.md; the two programs define the contact half-width a
+differently, so it is left out).
+
+Usage:
+  python3 benchmarks/peer_freefem.py [--binary build/signorini]
+      [--peer ../shared/peers/freefem] [--runs 3]
+      [--methods ipopt,newton-penalty] [--sizes 6:3:5,8:4:6,...]
+      [--ranks 1] [--fields]
+
+--sizes: comma-separated 'peer level:global refinements:local refinements'.
+--fields: our runs write their VTU fields as a user's run does (default:
+  Output > Format = none, as the peer writes only a profile CSV).
+Needs FreeFem++ (Debian package freefem++). Python 3 standard library only.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_common  # noqa: E402
+
+ROOT = bench_common.ROOT
+P0_CONVERGED = 10.92
+
+
+def run_peer(peer_dir, level, work):
+    """One run of the peer; returns (wall s, iterations, p0, DoFs)."""
+    env = dict(os.environ, FF_LOADPATH="/usr/lib/freefem++")
+    cmd = ["FreeFem++", "-nw", "-v", "0", "hertz_rigid.edp", "-DORDER=1",
+           "-level", str(level), "-igrade", "0.2", "-out", "profiles",
+           "-ipoptopt", "ipopt.opt"]
+    start = time.perf_counter()
+    out = subprocess.run(cmd, cwd=work, env=env, capture_output=True,
+                         text=True)
+    wall = time.perf_counter() - start
+    result = [l for l in out.stdout.splitlines() if l.startswith("RESULT,")]
+    if out.returncode != 0 or not result:
+        raise RuntimeError(f"peer level {level} failed:\n{out.stdout[-2000:]}"
+                           f"\n{out.stderr[-2000:]}")
+    f = result[-1].split(",")
+    iterations = None
+    for line in out.stdout.splitlines():
+        if line.strip().startswith("Number of Iterations"):
+            iterations = int(line.split(":")[1])
+    # RESULT,level,order,nv,ndof,ncon,status,nhess,clock,clock_ipopt,hf,
+    # a_mid,p0h,...
+    return wall, iterations, float(f[12]), int(f[4])
+
+
+def run_ours(binary, method, glob, local, ranks, fields, work):
+    """One run of signorini; returns (wall s, iterations, p0, DoFs)."""
+    overrides = {"Mesh": {"Global refinements": glob,
+                          "Local refinements": local},
+                 "Solver": {"Method": method}}
+    text = bench_common.variant_text(os.path.join(ROOT, "prm",
+                                                  "hertz_peer.prm"),
+                                     work, overrides)
+    if fields:
+        text += ("subsection Output\n  set Format = vtu\n"
+                 "  set Verbosity = quiet\nend\n")
+    prm = os.path.join(work, "run.prm")
+    with open(prm, "w") as f:
+        f.write(text)
+    cmd = [binary, prm]
+    env = dict(os.environ)
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    start = time.perf_counter()
+    out = subprocess.run(cmd, cwd=work, env=env, capture_output=True,
+                         text=True)
+    wall = time.perf_counter() - start
+    if out.returncode not in (0, 4):
+        raise RuntimeError(f"signorini failed ({out.returncode}):\n"
+                           f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
+    with open(os.path.join(work, "summary.json")) as f:
+        s = json.load(f)
+    q = {k: v["value"] if isinstance(v, dict) else v
+         for k, v in s["quantities"].items()}
+    iterations = next(v for k, v in s.items() if k.endswith(" iterations"))
+    return wall, iterations, q["hertz_p0"], s["mesh"]["dofs"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--binary", default=os.path.join(ROOT, "build",
+                                                         "signorini"))
+    parser.add_argument("--peer", default=os.path.join(
+        ROOT, "..", "shared", "peers", "freefem"))
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--methods", default="ipopt,newton-penalty")
+    parser.add_argument("--sizes", default="6:3:5,8:4:6,9:4:7")
+    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--fields", action="store_true")
+    parser.add_argument("--csv", default=None,
+                        help="also write the table's rows here")
+    args = parser.parse_args()
+    if shutil.which("FreeFem++") is None:
+        sys.exit("FreeFem++ not found: apt-get install freefem++ libfreefem++")
+    binary = os.path.abspath(args.binary)
+    methods = [m for m in args.methods.split(",") if m]
+    sizes = [tuple(int(x) for x in s.split(":")) for s in args.sizes.split(",")]
+    info = bench_common.machine_info()
+    print(bench_common.stamp(info, sys.argv, binary))
+
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="peer_") as tmp:
+        peer_work = os.path.join(tmp, "peer")
+        shutil.copytree(os.path.abspath(args.peer), peer_work,
+                        ignore=shutil.ignore_patterns("logs", "profiles",
+                                                      "*.csv"))
+        os.makedirs(os.path.join(peer_work, "profiles"), exist_ok=True)
+        for level, glob, local in sizes:
+            times = {"peer": []}
+            times.update({m: [] for m in methods})
+            last = {}
+            for r in range(args.runs):
+                # Alternate: peer, then each of ours, run after run.
+                res = run_peer(peer_work, level, peer_work)
+                times["peer"].append(res[0])
+                last["peer"] = res
+                for m in methods:
+                    work = os.path.join(tmp, f"{m}_{glob}_{local}")
+                    os.makedirs(work, exist_ok=True)
+                    res = run_ours(binary, m, glob, local, args.ranks,
+                                   args.fields, work)
+                    times[m].append(res[0])
+                    last[m] = res
+            peer_median = statistics.median(times["peer"])
+            for name in ["peer"] + methods:
+                wall, its, p0, dofs = last[name]
+                median = statistics.median(times[name])
+                rows.append({
+                    "program": "FreeFEM+IPOPT" if name == "peer"
+                    else f"signorini {name}",
+                    "size": f"level {level}" if name == "peer"
+                    else f"{glob}+{local}",
+                    "DoFs": dofs, "iterations": its,
+                    "wall median s": median,
+                    "wall min s": min(times[name]),
+                    "wall max s": max(times[name]),
+                    "peer / this": peer_median / median,
+                    "p0 error": p0 / P0_CONVERGED - 1.})
+    head = ("| program | size | DoFs | iterations | wall s (median; min-max)"
+            " | peer/this | p0 vs converged |")
+    print(head)
+    print("|" + "---|" * 7)
+    for r in rows:
+        print(f"| {r['program']} | {r['size']} | {r['DoFs']} | "
+              f"{r['iterations']} | {r['wall median s']:.2f} "
+              f"({r['wall min s']:.2f}-{r['wall max s']:.2f}) | "
+              f"{r['peer / this']:.2f} | {100 * r['p0 error']:+.2f}% |")
+    if args.csv:
+        with open(args.csv, "w") as f:
+            f.write(",".join(rows[0].keys()) + "\n")
+            for r in rows:
+                f.write(",".join(str(v) for v in r.values()) + "\n")
+
+
+if __name__ == "__main__":
+    main()
