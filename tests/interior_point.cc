@@ -114,10 +114,10 @@ main()
   const std::vector<std::string> hertz = {"contact_force_x", "contact_force_y",
                                           "hertz_a", "hertz_p0", "hertz_p0_fit"};
   const std::vector<Case>        cases = {
-    {"hertz", "default.prm", coarse_hertz, 2, hertz, 40},
-    {"groove", "hertz_groove.prm", coarse_groove, 2, hertz, 40},
-    {"ssnv187_2d", "ssnv187_plane.prm", "", 2, {"top_uy", "contact_force_y"}, 40},
-    {"ssnv187_3d", "ssnv187_plane.prm", plane_3d, 3, {"top_uz", "contact_force_z"}, 40}};
+    {"hertz", "default.prm", coarse_hertz, 2, hertz, 25},
+    {"groove", "hertz_groove.prm", coarse_groove, 2, hertz, 15},
+    {"ssnv187_2d", "ssnv187_plane.prm", "", 2, {"top_uy", "contact_force_y"}, 15},
+    {"ssnv187_3d", "ssnv187_plane.prm", plane_3d, 3, {"top_uz", "contact_force_z"}, 15}};
 
   for (const auto &c : cases)
     {
