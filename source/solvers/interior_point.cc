@@ -418,30 +418,78 @@ namespace Signorini
         const double sigma  = std::min(1., std::pow(mu_aff / mu_avg, 3));
         mu = std::max(sigma * mu_avg, 0.1 * parameters.tolerance * unit);
 
-        // The corrector step with the same matrix.
-        for (unsigned int k = 0; k < n; ++k)
-          c[k] = active[k] ? mu - s[k] * z[k] - ds_aff[k] * dz_aff[k] : 0.;
-        corrected_rhs(c);
-        if (!solve())
-          {
-            // The corrector alone may leave the cone the curvature test
-            // asks for: fall back to the centred step without it.
-            for (unsigned int k = 0; k < n; ++k)
-              c[k] = active[k] ? mu - s[k] * z[k] : 0.;
-            corrected_rhs(c);
-            if (!solve())
-              {
-                stats.reason = "the corrector step failed" +
-                               (stats.linear_failures > 0 ?
-                                  ": " + stats.linear_message :
-                                  std::string(""));
-                return stats;
-              }
-          }
-        recover(d);
+        // The corrector step with the same matrix. Far from the solution
+        // its second-order term can turn the step into an ascent direction
+        // of the merit function phi = E - mu sum ln s + nu sum |g - s|
+        // (e.g. a body that falls freely onto the foundation: the affine
+        // step's large ds dz pushes it back up); then the centred step
+        // without that term, and last the pure centring step (mu = mu_avg).
+        double barrier = 0., violation = 0.;
         for (unsigned int k = 0; k < n; ++k)
           if (active[k])
-            dz[k] = (c[k] - z[k] * ds[k]) / s[k];
+            {
+              barrier += std::log(s[k]);
+              violation += std::abs(state[k].g - s[k]);
+            }
+        barrier   = sum(barrier);
+        violation = sum(violation);
+        double slope = 0.;
+        bool   found = false;
+        for (unsigned int variant = 0; variant < 3 && !found; ++variant)
+          {
+            if (variant == 2)
+              mu = std::max(mu, mu_avg);
+            for (unsigned int k = 0; k < n; ++k)
+              c[k] = active[k] ? mu - s[k] * z[k] -
+                                   (variant == 0 ? ds_aff[k] * dz_aff[k] : 0.) :
+                                 0.;
+            corrected_rhs(c);
+            if (!solve())
+              continue;
+            recover(d);
+            double barrier_slope = 0., z_plus = 0.;
+            for (unsigned int k = 0; k < n; ++k)
+              if (active[k])
+                {
+                  dz[k] = (c[k] - z[k] * ds[k]) / s[k];
+                  barrier_slope += ds[k] / s[k];
+                  z_plus = std::max(z_plus, std::abs(z[k] + dz[k]));
+                }
+            const double nu_trial = std::max(nu, 1.5 * max(z_plus));
+            slope = -(rhs * d_raw) - mu * sum(barrier_slope) - nu_trial * violation;
+            if (slope < 0. || variant == 2)
+              {
+                nu    = nu_trial;
+                found = true;
+              }
+            else
+              progress << "      " << (variant == 0 ? "corrector" : "centred")
+                       << " step is no descent direction of the merit function"
+                       << std::endl;
+          }
+        if (!found)
+          {
+            stats.reason = "the corrector step failed" +
+                           (stats.linear_failures > 0 ? ": " + stats.linear_message :
+                                                        std::string(""));
+            return stats;
+          }
+        const double phi = e.value - mu * barrier + nu * violation;
+        // A displacement step below round-off of the geometry with the
+        // constraints and complementarity met: nothing is left to gain (the
+        // dual residual of an ill-conditioned Hessian, nu = 0.4999, stalls
+        // above the tolerance at round-off level).
+        if (increment_limit > 0. && primal <= tol * h && complementarity <= tol * unit &&
+            d.linfty_norm() <= increment_limit)
+          {
+            progress << "      step " << std::scientific << std::setprecision(2)
+                     << d.linfty_norm() << " is below the increment tolerance"
+                     << std::endl;
+            stats.converged = true;
+            mu_last         = mu_avg;
+            warm            = true;
+            return stats;
+          }
 
         // Step lengths: fraction to the boundary, step limit.
         TimerOutput::Scope scope(timer, "line search");
@@ -454,25 +502,6 @@ namespace Signorini
             if (largest * alpha > step_limit)
               alpha = step_limit / largest;
           }
-
-        // Merit function phi = E - mu sum ln s + nu sum |g - s| and its
-        // directional derivative.
-        double barrier = 0., violation = 0., barrier_slope = 0., z_plus = 0.;
-        for (unsigned int k = 0; k < n; ++k)
-          if (active[k])
-            {
-              barrier += std::log(s[k]);
-              violation += std::abs(state[k].g - s[k]);
-              barrier_slope += ds[k] / s[k];
-              z_plus = std::max(z_plus, std::abs(z[k] + dz[k]));
-            }
-        barrier       = sum(barrier);
-        violation     = sum(violation);
-        barrier_slope = sum(barrier_slope);
-        z_plus        = max(z_plus);
-        nu            = std::max(nu, 1.5 * z_plus);
-        const double phi   = e.value - mu * barrier + nu * violation;
-        const double slope = -(rhs * d_raw) - mu * barrier_slope - nu * violation;
         const double noise = 1e3 * std::numeric_limits<double>::epsilon() *
                              (std::abs(e.strain_energy) + std::abs(e.external_work) +
                               std::abs(e.value) + mu * std::abs(barrier) + nu * violation);

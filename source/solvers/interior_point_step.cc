@@ -49,8 +49,10 @@ namespace Signorini
     minimizer.setup(*this->problem.contact,
                     this->scene.homogeneous_constraints,
                     this->scene.dof_handler.get_communicator());
-    minimizer.set_step_limit(this->parameters.solver.newton.max_increment *
-                             this->scene.size);
+    minimizer.set_step_limits(this->parameters.solver.newton.max_increment *
+                                this->scene.size,
+                              this->parameters.solver.newton.increment_tolerance *
+                                this->scene.size);
   }
 
   template <int dim>

@@ -80,7 +80,8 @@ namespace Signorini
    *   is solved again.
    * - Convergence: |grad E - sum z grad g|_2 <= tol F, max |g_k - s_k| <=
    *   tol h and max s_k z_k <= tol F h, with F the energy's force scale at
-   *   the start and h the smallest contact mesh size.
+   *   the start and h the smallest contact mesh size; or the last two with
+   *   a displacement step below the increment tolerance (round-off).
    * - Warm start: the previous step's multipliers; slacks s_k = max(g_k,
    *   min(initial slack h_k, mu_0 / z_k)) and z_k >= mu_0 / s_k.
    *
@@ -109,11 +110,15 @@ namespace Signorini
           const AffineConstraints<double> &constraints,
           const MPI_Comm                   communicator);
 
-    /// No DoF moves by more than this in one step (0: no limit).
+    /// No DoF moves by more than @p limit in one step (0: no limit). A
+    /// step of at most @p increment_tolerance in every DoF, with the
+    /// constraints and complementarity met, ends the iteration as converged
+    /// (0: never).
     void
-    set_step_limit(const double limit)
+    set_step_limits(const double limit, const double increment_tolerance)
     {
-      step_limit = limit;
+      step_limit      = limit;
+      increment_limit = increment_tolerance;
     }
 
     /**
@@ -159,7 +164,8 @@ namespace Signorini
     const LinearSolver &linear_solver;
     ConditionalOStream &progress;
     TimerOutput        &timer;
-    double              step_limit = 0.;
+    double              step_limit      = 0.;
+    double              increment_limit = 0.;
 
     const Contact::Model<dim> *contact = nullptr;
     std::vector<bool>          active; // the node carries a constraint
