@@ -353,4 +353,21 @@ main()
   run_case("ipopt_on_two_ranks",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\nend"}}),
            out, true, "mpirun --allow-run-as-root --oversubscribe -np 2 ");
+  // The interior point method handles the rigid foundation only.
+  run_case("interior_point_without_contact",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\nend"}}),
+           out);
+  run_case("interior_point_two_bodies",
+           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n  end\n",
+                      "interior-point"),
+           out);
+  run_case("interior_point_incompressible",
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Incompressible = true"},
+                  {"@EXTRA@", "subsection Solver\n  set Method = interior-point\nend"}}),
+           out);
+  run_case("interior_point_zero_tolerance",
+           scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\n"
+                              "  subsection Interior point\n    set Tolerance = 0\n"
+                              "  end\nend"}}),
+           out);
 }

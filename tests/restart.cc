@@ -5,6 +5,7 @@
 // stopped:
 // - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks;
 // - Ipopt with the rigid foundation's constraints (warm-started multipliers);
+// - the interior point method (the same, on 1 and 2 ranks);
 // - adaptive refinement cycles, restarted in the load path and in a cycle.
 // Writing checkpoints does not change the run. Bad restarts exit 2 with a
 // message: a changed mesh entry, another number of ranks, no checkpoint.
@@ -99,6 +100,13 @@ main()
                 "subsection Mesh\n  set Global refinements = 2\nend\n"
                 "subsection Solver\n  set Method = ipopt\nend\n",
               {1, 3});
+  // The program's interior point method: its multipliers warm-started
+  // across steps, on 1 and 2 ranks.
+  const std::string interior_point =
+    four_steps + "subsection Mesh\n  set Global refinements = 2\nend\n"
+                 "subsection Solver\n  set Method = interior-point\nend\n";
+  check_scene(out, "interior_point", "default.prm", interior_point, {1, 3});
+  check_scene(out, "interior_point_ranks", "default.prm", interior_point, {2}, mpirun);
   // Refinement cycles: checkpoints in the load path (0: after step 1),
   // after cycle 0 is recorded (2), on cycle 1's mesh before its solve (3)
   // and after it (4).

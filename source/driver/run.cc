@@ -466,7 +466,9 @@ namespace Signorini
           std::cout << "\nResult (" << report.status << ", "
                     << report.steps.size() << " load steps, "
                     << report.newton_iterations
-                    << (report.iteration_name == "ipopt" ? " Ipopt" : " Newton")
+                    << (report.iteration_name == "ipopt"          ? " Ipopt" :
+                        report.iteration_name == "interior_point" ? " interior point" :
+                                                                    " Newton")
                     << " iterations):\n";
           for (const auto &q : report.quantities)
             {

@@ -160,7 +160,8 @@ namespace Signorini
       static const SelectionTable<Method> table = {
         {Method::newton, "newton"},
         {Method::newton_penalty, "newton-penalty"},
-        {Method::ipopt, "ipopt"}};
+        {Method::ipopt, "ipopt"},
+        {Method::interior_point, "interior-point"}};
       return table;
     }
 
@@ -179,7 +180,12 @@ namespace Signorini
                         "the contact and incompressibility constraints and "
                         "exact derivatives (one MPI rank); for two-body "
                         "contact it minimises each stage of the penalty "
-                        "continuation without constraints.");
+                        "continuation without constraints. interior-point: "
+                        "the program's own primal-dual interior point method "
+                        "with the rigid foundation's node-wise constraints "
+                        "(Mehrotra predictor-corrector, the Newton system "
+                        "condensed onto the displacement and solved by the "
+                        "Linear solver; runs with MPI).");
       prm.enter_subsection("Newton");
       NewtonMinimizer::Parameters::declare_parameters(prm);
       prm.leave_subsection();
@@ -188,6 +194,9 @@ namespace Signorini
       prm.leave_subsection();
       prm.enter_subsection("Ipopt");
       IpoptParameters::declare_parameters(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Interior point");
+      InteriorPointParameters::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Linear solver");
       LinearSolver::Parameters::declare_parameters(prm);
@@ -208,6 +217,9 @@ namespace Signorini
       prm.leave_subsection();
       prm.enter_subsection("Ipopt");
       ipopt.parse_parameters(prm, prm_directory);
+      prm.leave_subsection();
+      prm.enter_subsection("Interior point");
+      interior_point.parse_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Linear solver");
       linear.parse_parameters(prm);

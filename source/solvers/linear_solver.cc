@@ -184,6 +184,7 @@ namespace Signorini
     direct.problem.reset();
     direct.matrix.reset();
     direct.pattern_hash = 0;
+    direct.factorized   = false;
   }
 
   namespace
@@ -242,6 +243,7 @@ namespace Signorini
         const std::size_t hash  = pattern_hash(A);
         const bool        same  = direct.solver && direct.pattern_hash == hash;
         const bool        reuse = Utilities::MPI::min(same ? 1 : 0, comm) == 1;
+        bool              same_values = reuse && direct.factorized;
         if (!reuse)
           {
             forget_analysis();
@@ -287,13 +289,25 @@ namespace Signorini
                 A.ExtractMyRowView(r, n, values);
                 direct.matrix->ExtractMyRowView(r, n_copy, copy);
                 AssertThrow(n == n_copy, ExcInternalError());
+                if (same_values && !std::equal(values, values + n, copy))
+                  same_values = false;
                 std::copy(values, values + n, copy);
               }
             direct.problem->SetLHS(&x.trilinos_vector());
             direct.problem->SetRHS(const_cast<Epetra_MultiVector *>(
               static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
           }
-        int error = direct.solver->NumericFactorization();
+        // The same values as the last factorisation (a second right-hand
+        // side for one matrix, as the interior point method's corrector):
+        // solve with it again.
+        int error = 0;
+        if (Utilities::MPI::min(same_values ? 1 : 0, comm) == 0)
+          {
+            direct.factorized = false;
+            error             = direct.solver->NumericFactorization();
+            ++direct.n_numeric;
+            direct.factorized = (error == 0);
+          }
         if (error == 0)
           error = direct.solver->Solve();
         if (error != 0)

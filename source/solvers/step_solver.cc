@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/solvers/interior_point_step.h>
 #include <signorini/solvers/ipopt_step.h>
 #include <signorini/solvers/newton_step.h>
 #include <signorini/solvers/penalty_step.h>
@@ -247,6 +248,15 @@ namespace Signorini
       throw InputError("Body 1 > Material > Incompressible",
                        "J = 1 constraints need Solver > Method = ipopt, not " +
                          method);
+    if (m == Method::interior_point &&
+        p.contact.type != Parameters::Contact::Type::rigid_foundation)
+      throw InputError("Solver > Method",
+                       "interior-point handles the node-wise constraints of "
+                       "Contact > Type = rigid foundation, and this scene has "
+                       "Contact > Type = " +
+                         Parameters::selection_name(p.contact.type,
+                                                    Parameters::Contact::types()) +
+                         ": use " + (contact ? "newton-penalty or ipopt" : "newton"));
     if (m == Method::ipopt && n_ranks > 1)
       throw InputError("Solver > Method",
                        "ipopt runs on one MPI rank, and this run has " +
@@ -282,6 +292,10 @@ namespace Signorini
                                                       true);
           return std::make_unique<IpoptStep<dim>>(parameters, scene, problem,
                                                   timer, progress);
+        case Method::interior_point:
+          return std::make_unique<InteriorPointStep<dim>>(parameters, scene,
+                                                          problem, timer,
+                                                          progress);
       }
     return nullptr;
   }

@@ -5,6 +5,7 @@
 #include <signorini/contact/foundation.h>
 #include <signorini/contact/hertz.h>
 #include <signorini/contact/two_body.h>
+#include <signorini/solvers/interior_point.h>
 #include <signorini/solvers/ipopt_solver.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/material/interface.h>
@@ -102,13 +103,15 @@ namespace Signorini
       {
         newton,         // Newton on E (no contact)
         newton_penalty, // penalty continuation, stages minimised by Newton
-        ipopt           // Ipopt: constraints, or penalty stages (two bodies)
+        ipopt,          // Ipopt: constraints, or penalty stages (two bodies)
+        interior_point  // our primal-dual interior point (rigid foundation)
       };
 
       Method                       method = Method::newton;
       NewtonMinimizer::Parameters  newton;
       ContinuationParameters       penalty;
       IpoptParameters              ipopt;
+      InteriorPointParameters      interior_point;
       LinearSolver::Parameters     linear;
 
       /// The names of the methods in the parameter file.

@@ -116,6 +116,14 @@ namespace Signorini
       return direct.n_symbolic;
     }
 
+    /// How many numeric factorisations the direct solver has done so far
+    /// (a second solve with the same matrix values reuses the last one).
+    unsigned int
+    n_numeric_factorizations() const
+    {
+      return direct.n_numeric;
+    }
+
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
      * failed; @p message says why.
@@ -161,6 +169,9 @@ namespace Signorini
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
       unsigned int                          n_symbolic = 0;
+      /// The solver holds the factorisation of the matrix copy's values.
+      bool                                  factorized = false;
+      unsigned int                          n_numeric  = 0;
     };
 
     Parameters          parameters;

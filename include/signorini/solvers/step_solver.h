@@ -30,8 +30,10 @@ namespace Signorini
    * its part of summary.json and any quantities of its own.
    *
    * Implementations: NewtonStep (no contact), PenaltyStep (penalty
-   * continuation; each stage minimised by Newton or Ipopt) and IpoptStep
-   * (Ipopt with the contact and incompressibility constraints). They are
+   * continuation; each stage minimised by Newton or Ipopt), IpoptStep
+   * (Ipopt with the contact and incompressibility constraints) and
+   * InteriorPointStep (the program's interior point method with the rigid
+   * foundation's constraints, on any number of ranks). They are
    * made by create_step_solver(), which holds the table of which method
    * handles which scene.
    */
@@ -62,7 +64,8 @@ namespace Signorini
           StepStatistics              &stats,
           Report::Step                &record) = 0;
 
-    /// "newton" or "ipopt": the name of the iteration counts in the output.
+    /// "newton", "ipopt" or "interior_point": the name of the iteration
+    /// counts in the output.
     virtual std::string
     iteration_name() const
     {
@@ -157,7 +160,8 @@ namespace Signorini
 
   /// InputError if the method cannot handle the scene (contact without a
   /// contact method, J = 1 constraints without Ipopt, Ipopt on several
-  /// ranks); needs no mesh.
+  /// ranks, the interior point method without a rigid foundation); needs
+  /// no mesh.
   void
   check_solver_compatibility(const Parameters::Scene &parameters,
                              const unsigned int       n_ranks);

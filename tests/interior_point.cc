@@ -1,0 +1,163 @@
+// The program's own interior point method (Solver > Method = interior-point)
+// against Ipopt on the rigid-foundation scenes, and on 2 MPI ranks:
+// - the Hertz cylinder on a plane (prm/default.prm on a coarser mesh), the
+//   cylinder in a groove (prm/hertz_groove.prm, coarser) and SSNV187 on a
+//   plane in 2D and 3D: the same contact force, Hertz a and p0 (or the top
+//   displacement) as Ipopt to 1e-6 relative, and the same current positions
+//   of every contact node to 1e-6 of the largest displacement;
+// - no contact node penetrates by more than 1e-8 of its element size;
+// - the iteration count stays within a bound (a pass/fail line, since the
+//   count itself may change with round-off);
+// - on 2 ranks (KLU instead of MUMPS, another partition) the quantities agree
+//   with 1 rank to 1e-8 relative.
+
+#include "run_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using RunOutput::read_csv;
+using RunOutput::summary_numbers;
+using RunOutput::summary_quantity;
+using RunOutput::verdict;
+
+namespace
+{
+  const std::string two_ranks = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
+
+  std::string
+  method(const std::string &name)
+  {
+    return "subsection Solver\n  set Method = " + name + "\nend\n";
+  }
+
+  /// Largest relative difference of the quantities @p names of two runs.
+  double
+  quantity_difference(const std::string              &a,
+                      const std::string              &b,
+                      const std::vector<std::string> &names)
+  {
+    double worst = 0.;
+    for (const auto &q : names)
+      {
+        const double x = summary_quantity(a + "/summary.json", q);
+        const double y = summary_quantity(b + "/summary.json", q);
+        const double d = std::abs(x - y) / std::max(std::abs(y), 1e-300);
+        if (!(d <= worst))
+          std::cerr << a << " vs " << b << ": " << q << " " << x << " vs " << y << "\n";
+        worst = std::isnan(d) ? 1. : std::max(worst, d);
+      }
+    return worst;
+  }
+
+  /// Largest difference of the current node positions in the contact
+  /// profiles of two runs, relative to the largest displacement.
+  double
+  position_difference(const std::string &a, const std::string &b, const unsigned int dim)
+  {
+    const auto p = read_csv(a + "/contact_profile.csv");
+    const auto q = read_csv(b + "/contact_profile.csv");
+    if (p.empty() || p.size() != q.size())
+      return 1.;
+    const char *axes[] = {"x", "y", "z"};
+    double      largest = 0., worst = 0.;
+    for (std::size_t r = 0; r < p.size(); ++r)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const std::string X = std::string("X") + axes[d];
+          const std::string x = std::string(axes[d]);
+          if (!p[r].count(x) || !p[r].count(X) || std::abs(p[r].at(X) - q[r].at(X)) > 1e-12)
+            return 1.;
+          largest = std::max(largest, std::abs(p[r].at(x) - p[r].at(X)));
+          worst   = std::max(worst, std::abs(p[r].at(x) - q[r].at(x)));
+        }
+    return largest > 0. ? worst / largest : 1.;
+  }
+
+  double
+  summary_value(const std::string &folder, const std::string &key)
+  {
+    return RunOutput::first_number(summary_numbers(folder + "/summary.json"), key);
+  }
+
+  struct Case
+  {
+    std::string              name;
+    std::string              scene;
+    std::string              edits;
+    unsigned int             dim;
+    std::vector<std::string> quantities;
+    unsigned int             max_iterations;
+  };
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  const std::string coarse_hertz = "subsection Mesh\n  set Local refinements = 3\nend\n";
+  const std::string coarse_groove = "subsection Mesh\n  set Local refinements = 2\nend\n";
+  const std::string plane_3d =
+    "set Dimension = 3\n"
+    "subsection Body 1\n  subsection Geometry\n    set Lower corner = 0, 0, 0\n"
+    "    set Upper corner = 1, 1, 1\n    set Subdivisions = 3, 2, 3\n  end\nend\n"
+    "subsection Boundary conditions\n  set Fixed boundaries = 0: x, 2: y, 3: y\n"
+    "  set Traction boundaries = 5\n  set Traction = 0; 0; -0.876*t\nend\n"
+    "subsection Contact\n  set Contact boundary id = 4\nend\n"
+    "subsection Postprocess\n  subsection Mean boundary displacement\n"
+    "    set Boundary id = 5\n    set Component = z\n    set Name = top_uz\n"
+    "  end\nend\n";
+  const std::vector<std::string> hertz = {"contact_force_x", "contact_force_y",
+                                          "hertz_a", "hertz_p0", "hertz_p0_fit"};
+  const std::vector<Case>        cases = {
+    {"hertz", "default.prm", coarse_hertz, 2, hertz, 25},
+    {"groove", "hertz_groove.prm", coarse_groove, 2, hertz, 15},
+    {"ssnv187_2d", "ssnv187_plane.prm", "", 2, {"top_uy", "contact_force_y"}, 15},
+    {"ssnv187_3d", "ssnv187_plane.prm", plane_3d, 3, {"top_uz", "contact_force_z"}, 15}};
+
+  for (const auto &c : cases)
+    {
+      const std::string ip = c.name + "_interior_point", ipopt = c.name + "_ipopt";
+      // Ipopt's solution to a tighter tolerance, the reference.
+      const bool ran =
+        RunOutput::run_scene(ip, c.scene, c.edits + method("interior-point")) == 0 &&
+        RunOutput::run_scene(ipopt, c.scene,
+                             c.edits + method("ipopt") +
+                               "subsection Solver\n  subsection Ipopt\n"
+                               "    set Tolerance = 1e-12\n  end\nend\n") == 0;
+      out << c.name << ": both methods converged: " << verdict(ran) << "\n";
+      const double dq = quantity_difference(ip, ipopt, c.quantities);
+      const double dx = position_difference(ip, ipopt, c.dim);
+      std::cerr << c.name << ": quantities " << dq << ", positions " << dx << "\n";
+      out << c.name << ": quantities as Ipopt's to 1e-6: " << verdict(dq <= 1e-6) << "\n";
+      out << c.name << ": contact node positions as Ipopt's to 1e-6: "
+          << verdict(dx <= 1e-6) << "\n";
+      const double penetration = summary_value(ip, "max penetration over h");
+      std::cerr << c.name << ": penetration over h " << penetration << "\n";
+      out << c.name << ": max penetration <= 1e-8 h: " << verdict(penetration <= 1e-8)
+          << "\n";
+      const double iterations = summary_value(ip, "interior_point iterations");
+      std::cerr << c.name << ": iterations " << iterations << "\n";
+      out << c.name << ": iterations <= " << c.max_iterations << ": "
+          << verdict(iterations <= c.max_iterations) << "\n";
+    }
+
+  // 2 ranks against 1.
+  const bool ranks =
+    RunOutput::run_scene("hertz_two_ranks", "default.prm",
+                         coarse_hertz + method("interior-point"), two_ranks) == 0;
+  out << "hertz on 2 ranks converged: " << verdict(ranks) << "\n";
+  const double d = quantity_difference("hertz_two_ranks", "hertz_interior_point",
+                                       {"contact_force_y", "hertz_a", "hertz_p0",
+                                        "hertz_p0_fit", "active_contact_nodes"});
+  std::cerr << "1 vs 2 ranks: " << d << "\n";
+  out << "hertz on 2 ranks: quantities as on 1 rank to 1e-8: " << verdict(d <= 1e-8)
+      << "\n";
+  out << "hertz on 2 ranks: contact node positions as on 1 rank to 1e-8: "
+      << verdict(position_difference("hertz_two_ranks", "hertz_interior_point", 2) <= 1e-8)
+      << "\n";
+}
