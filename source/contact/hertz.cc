@@ -107,6 +107,15 @@ namespace Signorini
                         Patterns::Double(0.),
                         "Relative tolerance on the total contact force (0: "
                         "not checked).");
+      prm.declare_entry("Tolerance area",
+                        "0",
+                        Patterns::Double(0.),
+                        "Relative tolerance on the contact area (quantity "
+                        "contact_area: the tributary length (2D) or area "
+                        "(3D) of the contact nodes with a positive "
+                        "pressure) against Hertz's 2a (line contact, per "
+                        "unit thickness) or pi a^2 (point contact), times "
+                        "'Modelled fraction' (0: not checked).");
     }
 
     void
@@ -129,6 +138,7 @@ namespace Signorini
       tolerance_a       = prm.get_double("Tolerance a");
       tolerance_p0      = prm.get_double("Tolerance p0");
       tolerance_force   = prm.get_double("Tolerance force");
+      tolerance_area    = prm.get_double("Tolerance area");
       p0_from_fit       = (prm.get("Peak pressure from") == "fit");
       if (line_load > 0. && point_load > 0.)
         throw InputError("Contact > Hertz reference > Point load",

@@ -148,9 +148,11 @@ namespace Signorini
           summary.max_penetration_ratio =
             std::max(summary.max_penetration_ratio, s.penetration() / contact_nodes()[k].h);
           summary.total_force += forces[k] * s.grad;
+          this->add_moment(summary.moment, s.x, forces[k] * s.grad);
           if (forces[k] > threshold)
             {
               ++summary.n_active;
+              summary.area += contact_nodes()[k].weight;
               summary.max_pressure =
                 std::max(summary.max_pressure,
                          pressure(contact_nodes()[k], s, forces[k]));
@@ -163,6 +165,7 @@ namespace Signorini
       summary.max_pressure = Utilities::MPI::max(summary.max_pressure, comm);
       for (unsigned int d = 0; d < dim; ++d)
         summary.total_force[d] = Utilities::MPI::sum(summary.total_force[d], comm);
+      this->sum_area_and_moment(summary, comm);
       return summary;
     }
 

@@ -175,6 +175,7 @@ namespace Signorini
       , dof_handler(dof_handler)
       , mapping(mapping)
       , boundary(dof_handler, mapping)
+      , target(dof_handler, mapping)
     {}
 
     template <int dim>
@@ -186,7 +187,9 @@ namespace Signorini
       const auto    &fe   = dof_handler.get_fe();
       relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
       boundary.setup({contact_boundary}, hanging_constraints);
-      this->nodal_forces.assign(boundary.nodes().size() * dim, 0.);
+      target.setup({prm.target_boundary}, hanging_constraints);
+      this->nodal_forces.assign((boundary.nodes().size() + target.nodes().size()) * dim,
+                                0.);
 
       // Body 1's nodes as evaluation points (always: they carry the
       // output), and the Gauss points of the integral form.
@@ -470,7 +473,12 @@ namespace Signorini
         (rhs || hessian) ? assembly_constraints(constraints) : constraints;
       VectorType force_vector;
       if (forces)
-        force_vector.reinit(dof_handler.locally_owned_dofs(), relevant, comm, true);
+        {
+          // Body 2's DoFs of a pair may be owned elsewhere (extra_rows).
+          IndexSet ghosts = relevant;
+          ghosts.add_indices(extra_rows);
+          force_vector.reinit(dof_handler.locally_owned_dofs(), ghosts, comm, true);
+        }
 
       std::string            projection_failure; // the first on this rank
       constexpr unsigned int n_variables = IndicatorFace<dim>::n_variables;
@@ -519,8 +527,13 @@ namespace Signorini
           for (unsigned int j = 0; j < n_target_dofs; ++j)
             var[n1 + j] = dim + j;
           if (forces)
-            for (unsigned int j = 0; j < n1; ++j)
-              force_vector(p.dofs[j]) += -scale * fac[j] * g(var[j]);
+            {
+              for (unsigned int j = 0; j < n1; ++j)
+                force_vector(p.dofs[j]) += -scale * fac[j] * g(var[j]);
+              // The reaction on body 2's vertices.
+              for (unsigned int j = 0; j < n_target_dofs; ++j)
+                force_vector(faces2[pair.second].dofs[j]) += -scale * g(dim + j);
+            }
           if (!rhs && !hessian)
             continue;
           dofs.assign(p.dofs.begin(), p.dofs.end());
@@ -548,10 +561,14 @@ namespace Signorini
       if (forces)
         {
           force_vector.compress(VectorOperation::add);
-          forces->assign(nodes().size() * dim, 0.);
-          for (unsigned int k = 0; k < nodes().size(); ++k)
+          const std::size_t n1 = nodes().size();
+          forces->assign((n1 + target.nodes().size()) * dim, 0.);
+          for (unsigned int k = 0; k < n1; ++k)
             for (unsigned int d = 0; d < dim; ++d)
               (*forces)[k * dim + d] = force_vector(nodes()[k].dofs[d]);
+          for (unsigned int k = 0; k < target.nodes().size(); ++k)
+            for (unsigned int d = 0; d < dim; ++d)
+              (*forces)[(n1 + k) * dim + d] = force_vector(target.nodes()[k].dofs[d]);
         }
       stats.last_pairs =
         Utilities::MPI::sum(static_cast<unsigned long long>(pairs.size()), comm);

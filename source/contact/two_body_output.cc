@@ -81,11 +81,15 @@ namespace Signorini
       const double threshold = active_threshold(pressures);
       for (unsigned int k = 0; k < nodes().size(); ++k)
         {
+          Tensor<1, dim> f;
           for (unsigned int d = 0; d < dim; ++d)
-            s.total_force[d] += forces[k * dim + d];
+            f[d] = forces[k * dim + d];
+          s.total_force += f;
+          this->add_moment(s.moment, x[k], f);
           if (pressures[k] > threshold)
             {
               ++s.n_active;
+              s.area += nodes()[k].weight;
               s.max_pressure = std::max(s.max_pressure, pressures[k]);
             }
         }
@@ -93,6 +97,7 @@ namespace Signorini
       s.max_pressure = Utilities::MPI::max(s.max_pressure, comm);
       for (unsigned int d = 0; d < dim; ++d)
         s.total_force[d] = Utilities::MPI::sum(s.total_force[d], comm);
+      this->sum_area_and_moment(s, comm);
       s.has_pairs = true;
       s.pairs     = stats.last_pairs;
       return s;
@@ -154,6 +159,49 @@ namespace Signorini
                          BoundaryNodes<dim>::profile_header("penetration,pressure",
                                                             bool(reference_pressure)),
                          rows);
+      // Body 2's side beside it: NAME_target.csv.
+      const auto dot = file.rfind(".csv");
+      write_target_profile((dot == std::string::npos ? file : file.substr(0, dot)) +
+                             "_target.csv",
+                           u, forces);
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::write_target_profile(const std::string         &file,
+                                              const VectorType          &u,
+                                              const std::vector<double> &forces) const
+    {
+      const MPI_Comm                   comm = dof_handler.get_communicator();
+      const std::size_t                n1   = nodes().size();
+      std::vector<std::vector<double>> rows;
+      target_force        = Tensor<1, dim>();
+      target_max_pressure = 0.;
+      for (unsigned int k = 0; k < target.nodes().size(); ++k)
+        {
+          const auto    &n = target.nodes()[k];
+          Tensor<1, dim> f;
+          if ((n1 + k + 1) * dim <= forces.size())
+            for (unsigned int d = 0; d < dim; ++d)
+              f[d] = forces[(n1 + k) * dim + d];
+          const double pressure = f.norm() / n.weight;
+          target_force += f;
+          target_max_pressure = std::max(target_max_pressure, pressure);
+          std::vector<double> row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(n.X[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(n.X[d] + u[n.dofs[d]]);
+          row.push_back(pressure);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(f[d]);
+          row.push_back(n.weight);
+          rows.push_back(row);
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        target_force[d] = Utilities::MPI::sum(target_force[d], comm);
+      target_max_pressure = Utilities::MPI::max(target_max_pressure, comm);
+      target.write_csv(file, BoundaryNodes<dim>::profile_header("pressure", false), rows);
     }
 
     template <int dim>
@@ -198,6 +246,17 @@ namespace Signorini
       if (prm.integral)
         c["gauss points per face"] = prm.gauss_points;
       c["stretch"]           = prm.stretch;
+      {
+        // Body 2's side, from the reaction of the penalty term on its
+        // target nodes (at the last profile written).
+        Json &t = c["target side"];
+        t["nodes"] = target.n_global();
+        Json force = Json::array();
+        for (unsigned int d = 0; d < dim; ++d)
+          force.push_back(target_force[d]);
+        t["reaction on the target nodes"] = force;
+        t["max pressure"]                 = target_max_pressure;
+      }
       c["apex depth"]        = prm.apex_depth;
       Json &b                = c["broad phase"];
       b["target faces"]      = stats.target_faces;
@@ -221,6 +280,8 @@ namespace Signorini
     template std::vector<std::pair<Point<3>, double>> TwoBodyContact<3>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
     template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<2> &)> &reference_pressure) const;
     template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<3> &)> &reference_pressure) const;
+    template void TwoBodyContact<2>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
+    template void TwoBodyContact<3>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<2>::add_output_fields(DataOut<2> &data_out, const VectorType &u, const std::vector<double> &forces);
     template void TwoBodyContact<3>::add_output_fields(DataOut<3> &data_out, const VectorType &u, const std::vector<double> &forces);
     template void TwoBodyContact<2>::check_initial_state(const VectorType &u) const;

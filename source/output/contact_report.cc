@@ -18,6 +18,8 @@ namespace Signorini
     record.pairs                  = summary.pairs;
     for (unsigned int d = 0; d < dim; ++d)
       record.contact_force_vector[d] = summary.total_force[d];
+    record.contact_moment = summary.moment;
+    record.contact_area   = summary.area;
     std::vector<std::pair<Point<dim>, double>> pressure;
     if (hertz.active())
       pressure = contact.pressure_samples(u);
@@ -35,6 +37,20 @@ namespace Signorini
             q.tolerance     = hertz.tolerance_force;
           }
         quantities.push_back(q);
+      }
+    if (hertz.active())
+      {
+        // The Hertz contact area: 2a per unit thickness (line contact) or
+        // pi a^2 (point contact), times the modelled fraction.
+        const double a = hertz.half_width();
+        Quantity     area;
+        area.name          = "contact_area";
+        area.value         = summary.area;
+        area.has_reference = true;
+        area.reference     = hertz.modelled_fraction *
+                         (hertz.point_contact() ? numbers::PI * a * a : 2. * a);
+        area.tolerance = hertz.tolerance_area;
+        quantities.push_back(area);
       }
     Quantity active;
     active.name  = "active_contact_nodes";

@@ -105,6 +105,16 @@ namespace Signorini
           {
             c["active nodes"]           = report.steps.back().active_nodes;
             c["max penetration over h"] = report.steps.back().penetration_ratio;
+            const Report::Step &last = report.steps.back();
+            c["area"]                 = last.contact_area;
+            Json force = Json::array(), moment = Json::array();
+            for (unsigned int d = 0; d < dim; ++d)
+              force.push_back(last.contact_force_vector[d]);
+            for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+              moment.push_back(last.contact_moment[d]);
+            c["resultant force"] = force;
+            c["resultant moment"] = moment;
+            c["moment about"]     = "origin";
           }
       }
     if (incompressibility_constraints > 0)
@@ -146,6 +156,7 @@ namespace Signorini
             o["active contact nodes"]   = s.active_nodes;
             o["max penetration over h"] = s.penetration_ratio;
             o["contact force"]          = s.contact_force_vector[dim - 1];
+            o["contact area"]           = s.contact_area;
             if (s.has_pairs)
               o["evaluated pairs"] = s.pairs;
           }
@@ -262,7 +273,10 @@ namespace Signorini
            "max_penetration_over_h,contact_force";
     for (unsigned int d = 0; d < dim; ++d)
       csv << ",contact_force_" << "xyz"[d];
-    csv << ",evaluated_pairs\n";
+    csv << ",evaluated_pairs,contact_area";
+    for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+      csv << ",contact_moment_" << "xyz"[d];
+    csv << "\n";
     if (std::string reason; !out.commit(&reason))
       std::cerr << "signorini: warning: " << reason << std::endl;
   }
@@ -287,7 +301,10 @@ namespace Signorini
         << s.contact_force_vector[dim - 1];
     for (unsigned int d = 0; d < dim; ++d)
       row << "," << s.contact_force_vector[d];
-    row << "," << s.pairs << "\n";
+    row << "," << s.pairs << "," << s.contact_area;
+    for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+      row << "," << s.contact_moment[d];
+    row << "\n";
     std::ofstream csv(file, std::ios::app);
     csv << row.str() << std::flush;
     if (!csv)

@@ -49,6 +49,7 @@ namespace Signorini
       double tolerance_a       = 0.;
       double tolerance_p0      = 0.;
       double tolerance_force   = 0.;
+      double tolerance_area    = 0.; // on the contact area (length in 2D)
       bool   p0_from_fit       = false; // else: the node nearest the axis
 
       bool

@@ -7,6 +7,7 @@
 #include <signorini/types.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -54,6 +55,12 @@ namespace Signorini
         double         max_penetration_ratio = 0.; // penetration over h
         Tensor<1, dim> total_force;                // on body 1 (or the body)
         double         max_pressure          = 0.;
+        /// Contact area (length in 2D): the tributary weights (reference
+        /// configuration) of the active nodes.
+        double         area = 0.;
+        /// Moment of the nodal contact forces about the origin, from the
+        /// nodes' current positions (2D: only the z component).
+        Tensor<1, 3>   moment;
         bool           has_pairs = false;          // a broad phase exists
         unsigned long long pairs = 0;               // pairs evaluated last
       };
@@ -251,6 +258,27 @@ namespace Signorini
       load_state(InputArchive &archive);
 
     protected:
+      /// Add the moment x x f (about the origin) of the force @p f at @p x
+      /// to @p moment (2D: the z component only).
+      static void
+      add_moment(Tensor<1, 3> &moment, const Point<dim> &x, const Tensor<1, dim> &f)
+      {
+        if constexpr (dim == 2)
+          moment[2] += x[0] * f[1] - x[1] * f[0];
+        else
+          for (unsigned int i = 0; i < 3; ++i)
+            moment[i] += x[(i + 1) % 3] * f[(i + 2) % dim] - x[(i + 2) % 3] * f[(i + 1) % dim];
+      }
+
+      /// Sum the area and moment of @p s over the ranks.
+      static void
+      sum_area_and_moment(StateSummary &s, const MPI_Comm comm)
+      {
+        s.area = Utilities::MPI::sum(s.area, comm);
+        for (unsigned int i = 0; i < 3; ++i)
+          s.moment[i] = Utilities::MPI::sum(s.moment[i], comm);
+      }
+
       /// The block's entries every model has: type, boundary id, what the
       /// contact is with (under @p with_key), nodes and mesh sizes.
       void

@@ -285,7 +285,8 @@ namespace Signorini
         return node_pressures(forces);
       }
 
-      /// Nodes of Gamma_C; the force record holds dim numbers per node.
+      /// Nodes of Gamma_C; the force record holds dim numbers per node,
+      /// then dim per node of body 2's target boundary (the reaction).
       const std::vector<BoundaryNode<dim>> &
       nodes() const
       {
@@ -421,11 +422,22 @@ namespace Signorini
       std::vector<double>
       node_pressures(const std::vector<double> &forces) const;
 
+      /// Profile of body 2's target nodes (reaction forces, pressure
+      /// |f_k| / w_k) as CSV (collective).
+      void
+      write_target_profile(const std::string         &file,
+                           const VectorType          &u,
+                           const std::vector<double> &forces) const;
+
       TwoBodyParameters      prm;
       types::boundary_id     contact_boundary;
       const DoFHandler<dim> &dof_handler;
       const Mapping<dim>    &mapping;
       BoundaryNodes<dim>     boundary;
+      /// Body 2's nodes on the target boundary: the reaction of the
+      /// penalty term on them (after body 1's in the force record, dim
+      /// numbers per node) gives body 2's pressure.
+      BoundaryNodes<dim>     target;
 
       std::vector<Point1> points;     // owned evaluation points
       std::vector<Point1> node_points; // owned nodes as points
@@ -439,6 +451,10 @@ namespace Signorini
       mutable PairStatistics                          stats;
       bool                                            convexified = false;
       mutable AffineConstraints<double>               merged;
+      /// Body 2's side at the last profile written: the reaction on its
+      /// target nodes and their largest pressure (for summary.json).
+      mutable Tensor<1, dim> target_force;
+      mutable double         target_max_pressure = 0.;
     };
   } // namespace Contact
 } // namespace Signorini

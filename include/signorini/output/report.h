@@ -37,6 +37,8 @@ namespace Signorini
       unsigned int active_nodes       = 0;
       double       penetration_ratio  = 0.;
       Tensor<1, 3> contact_force_vector; // on body 1 (or the body)
+      Tensor<1, 3> contact_moment;       // of those forces about the origin
+      double       contact_area = 0.;    // length in 2D
       bool               has_pairs = false; // the contact has a broad phase
       unsigned long long pairs     = 0;     // pairs it evaluated last
 
@@ -47,7 +49,7 @@ namespace Signorini
         ar &time &newton_iterations &backtracks &regularized &linear_iterations;
         ar &linear_fallbacks &cuts_before &residual &energy &min_J &stages;
         ar &solver_status &active_nodes &penetration_ratio;
-        ar &contact_force_vector &has_pairs &pairs;
+        ar &contact_force_vector &contact_moment &contact_area &has_pairs &pairs;
       }
     };
 
