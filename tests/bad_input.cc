@@ -7,7 +7,8 @@
 // file, a contact boundary id absent from the mesh, two bodies overlapping
 // at the start, an unknown Ipopt option; for the 3D shapes a radius <= 0,
 // a ball part with a wrong count of centre coordinates, a 3D die whose sag
-// exceeds its height) and benchmarks.md 5 (missing or unreadable files,
+// exceeds its height, 'Orientation = up' on a shape that is not a ball
+// part) and benchmarks.md 5 (missing or unreadable files,
 // unknown keys, values out of range, a mesh file with no contact boundary,
 // contradictory boundary conditions).
 
@@ -261,6 +262,10 @@ main()
   run_case("cylinder_zero_length",
            shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
                     "    set Length = 0"),
+           out);
+  run_case("orientation_up_on_cylinder",
+           shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
+                    "    set Orientation = up"),
            out);
   run_case("ball_part_in_2d",
            replace(scene({}), "set Subdivisions = 2, 2", "set Shape = octant ball"), out);

@@ -2,7 +2,8 @@
 // of the quarter and half disks after refinement, which checks the curved
 // manifolds and the boundary ids documented in mesh.h; and a two-body scene
 // whose bodies touch at one point: their vertices must stay separate.
-// In 3D the same for the ball parts (octant, quarter, hemisphere), the
+// In 3D the same for the ball parts (octant, quarter, hemisphere; also
+// turned up: Orientation = up), the
 // quarter and half cylinders and the die: volume and the area of each
 // boundary id against the exact values (computed with a degree 3 mapping,
 // which follows the manifolds), the vertices of the curved surface on the
@@ -205,6 +206,48 @@ main(int argc, char **argv)
     surface_check("hemisphere: vertices of the sphere (id 0)", off_surface(tria, 0, sphere),
                   out);
   }
+  // Orientation = up: the upper parts, the same ids and areas, on the side
+  // z >= cz (x >= cx for the octant and the quarter, y >= cy for the
+  // octant), the highest point a vertex.
+  for (const auto shape : {BodyGeometry::Shape::octant_ball, BodyGeometry::Shape::quarter_ball,
+                           BodyGeometry::Shape::hemisphere})
+    {
+      using Shape = BodyGeometry::Shape;
+      const std::string name = (shape == Shape::octant_ball  ? "octant ball" :
+                                shape == Shape::quarter_ball ? "quarter ball" :
+                                                               "hemisphere");
+      BodyGeometry g = ball(shape, c, r);
+      g.upward       = true;
+      parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+      build_scene_mesh<3>(mesh, {g}, {0}, tria);
+      const double n = (shape == Shape::octant_ball ? 8. : shape == Shape::quarter_ball ? 4. : 2.);
+      std::map<types::boundary_id, double> areas{{0, 4 * pi * r2 / n}};
+      if (shape == Shape::hemisphere)
+        areas[1] = pi * r2;
+      else
+        {
+          areas[1] = pi * r2 * 4. / n / 2.;
+          areas[2] = pi * r2 * 4. / n / 2.;
+        }
+      if (shape == Shape::octant_ball)
+        areas[3] = pi * r2 / 4;
+      measure(tria, areas, volume / n, name + " up", out);
+      surface_check(name + " up: vertices of the sphere (id 0)", off_surface(tria, 0, sphere),
+                    out);
+      bool   highest = false;
+      double below   = 0.;
+      for (const auto &v : tria.get_vertices())
+        {
+          highest = highest || v.distance(Point<3>(c[0], c[1], c[2] + r)) < 1e-14;
+          below   = std::max(below, c[2] - v[2]);
+          if (shape != Shape::hemisphere)
+            below = std::max(below, c[0] - v[0]);
+          if (shape == Shape::octant_ball)
+            below = std::max(below, c[1] - v[1]);
+        }
+      out << name << " up: on its side of the planes: " << (below < 1e-12 ? "yes" : "NO")
+          << ", the highest point is a vertex: " << (highest ? "yes" : "NO") << "\n";
+    }
   // Cylinders of radius 0.8 and length 2.5 along y through c.
   const double length = 2.5;
   auto cylinder = [&](const Point<3> &x) {

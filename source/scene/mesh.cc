@@ -264,6 +264,15 @@ namespace Signorini
                       "[length], > 0 and below the die's height (along y in "
                       "2D, z in 3D); the "
                       "radius is (w^2/4 + s^2)/(2 s) for width w and sag s.");
+    prm.declare_entry("Orientation",
+                      "down",
+                      Patterns::Selection("down|up"),
+                      "Ball parts (octant ball, quarter ball, hemisphere; "
+                      "3D): down: the lower part {z <= cz} (its flat face "
+                      "z = cz is the top); up: the upper part {z >= cz}, "
+                      "the same x and y ranges and boundary ids, its flat "
+                      "face the bottom (e.g. the lower of two balls "
+                      "pressed together). Other shapes: must be down.");
     prm.declare_entry("Boundary id offset",
                       "0",
                       Patterns::Integer(0, 200),
@@ -295,6 +304,12 @@ namespace Signorini
     length             = prm.get_double("Length");
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
+    upward             = (prm.get("Orientation") == "up");
+    if (upward && shape != Shape::octant_ball && shape != Shape::quarter_ball &&
+        shape != Shape::hemisphere)
+      throw InputError(context + " > Orientation",
+                       "'up' applies to the ball parts (octant ball, "
+                       "quarter ball, hemisphere), not to '" + s + "'");
 
     {
       double coarse_cells = 1.;
@@ -558,8 +573,18 @@ namespace Signorini
         }
       tria.reset_all_manifolds();
       const Point<3> center(g.center[0], g.center[1], g.center[2]);
-      GridTools::transform(
-        [&](const Point<3> &p) { return center + Point<3>(p[1], p[0], -p[2]); }, tria);
+      // Before this, the octant is {x, y, z >= 0}, the quarter ball
+      // {y, z >= 0}, the hemisphere {z >= 0}. Down: the half turn about the
+      // line x = y, z = 0. Up: the octant and the hemisphere as they are,
+      // the quarter ball turned by -90 degrees about z into {x, z >= 0}.
+      if (!g.upward)
+        GridTools::transform(
+          [&](const Point<3> &p) { return center + Point<3>(p[1], p[0], -p[2]); }, tria);
+      else if (g.shape == Shape::quarter_ball)
+        GridTools::transform(
+          [&](const Point<3> &p) { return center + Point<3>(p[1], -p[0], p[2]); }, tria);
+      else
+        GridTools::transform([&](const Point<3> &p) { return center + p; }, tria);
 
       std::vector<PlanarPart> planes;
       if (g.shape == Shape::hemisphere)

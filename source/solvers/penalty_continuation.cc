@@ -13,10 +13,12 @@ namespace Signorini
     prm.declare_entry("Initial penalty factor",
                       "1",
                       Patterns::Double(0.),
-                      "c_0 in mu_0 = c_0 E / h^2 (E: the largest "
-                      "small-strain Young's modulus of the bodies, h: the "
-                      "smallest mesh size h_k on the contact boundary) [-]; "
-                      "> 0. "
+                      "c_0 in mu_0 = c_0 E / h^2 (rigid foundation) or "
+                      "mu_0 = c_0 E h (two bodies; 2D and 3D) (E: the "
+                      "largest small-strain Young's modulus of the bodies, "
+                      "h: the smallest mesh size h_k on the contact "
+                      "boundary, for two bodies the smallest target face) "
+                      "[-]; > 0. "
                       "With c_0 = 1 a node carrying the pressure p "
                       "penetrates by about h sqrt(p / E) in the first "
                       "stage.");

@@ -142,7 +142,7 @@ namespace Signorini
        * The first penalty factor mu_0 for the scale @p c0_E (the initial
        * penalty factor c_0 times the largest small-strain Young's modulus):
        * its units are the model's (c_0 E / h^2 for node-wise gaps,
-       * c_0 E h^(dim-1) for the indicator function).
+       * c_0 E h for the indicator function, in 2D and 3D).
        */
       virtual double
       initial_penalty(const double c0_E) const = 0;

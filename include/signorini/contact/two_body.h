@@ -171,12 +171,14 @@ namespace Signorini
         rows.add_indices(extra_rows);
       }
 
-      /// mu P has the units of energy per length^(dim-1) times Phi (<= 1
-      /// inside a simplex): mu_0 = c_0 E h, h the smallest target face.
+      /// mu P is an energy (per unit thickness in 2D) and P = sum w_i Phi
+      /// has the units of w_i, a length^(dim-1) (Phi <= 1 is a number), so
+      /// mu is a stress times a length in 2D and in 3D: mu_0 = c_0 E h, h
+      /// the smallest target face.
       double
       initial_penalty(const double c0_E) const override
       {
-        return c0_E * std::pow(min_face_size, dim - 1);
+        return c0_E * min_face_size;
       }
 
       /// Distance to the bounding box of the cells of body 2 (the cells
