@@ -2,33 +2,6 @@
 
 namespace Signorini
 {
-  namespace
-  {
-    /// The energy functional at a fixed load time, as an objective.
-    template <int dim>
-    class EnergyAtTime : public Objective
-    {
-    public:
-      EnergyAtTime(const EnergyFunctional<dim> &energy, const double time)
-        : energy(energy)
-        , time(time)
-      {}
-
-      Evaluation
-      evaluate(const VectorType                &u,
-               const AffineConstraints<double> &constraints,
-               VectorType                      *rhs,
-               MatrixType                      *hessian) override
-      {
-        return energy.evaluate(u, time, constraints, rhs, hessian);
-      }
-
-    private:
-      const EnergyFunctional<dim> &energy;
-      const double                 time;
-    };
-  } // namespace
-
   template <int dim>
   InteriorPointStep<dim>::InteriorPointStep(const Parameters::Scene &parameters,
                                             Scene<dim>              &scene,
@@ -66,7 +39,7 @@ namespace Signorini
     // penetration this causes, the iteration removes it.
     const AffineConstraints<double> target = scene.boundary_constraints(time, false);
     target.distribute(scene.solution);
-    EnergyAtTime<dim> objective(*this->problem.energy, time);
+    EnergyObjective<dim> objective(*this->problem.energy, time);
     stats = minimizer.minimize(objective, scene.homogeneous_constraints,
                                scene.solution, scene.solution_ghosted,
                                scene.hessian, scene.rhs);

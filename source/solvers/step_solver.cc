@@ -182,32 +182,6 @@ namespace Signorini
     return true;
   }
 
-  namespace
-  {
-    /// The energy functional at a fixed load time, as a Newton objective.
-    template <int dim>
-    class EnergyObjective : public Objective
-    {
-    public:
-      EnergyObjective(const EnergyFunctional<dim> &energy, const double time)
-        : energy(energy)
-        , time(time)
-      {}
-
-      Evaluation
-      evaluate(const VectorType                &u,
-               const AffineConstraints<double> &constraints,
-               VectorType                      *rhs,
-               MatrixType                      *hessian) override
-      {
-        return energy.evaluate(u, time, constraints, rhs, hessian);
-      }
-
-    private:
-      const EnergyFunctional<dim> &energy;
-      const double                 time;
-    };
-  } // namespace
 
   template <int dim>
   bool

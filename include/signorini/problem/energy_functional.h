@@ -55,4 +55,28 @@ namespace Signorini
     const std::map<types::material_id, const Material::Interface *> &materials;
     const BoundaryConditions<dim>                                    &bc;
   };
+  /// The energy functional at a fixed load time, as an Objective (what a
+  /// Newton or interior point minimiser sees when there is no penalty).
+  template <int dim>
+  class EnergyObjective : public Objective
+  {
+  public:
+    EnergyObjective(const EnergyFunctional<dim> &energy, const double time)
+      : energy(energy)
+      , time(time)
+    {}
+
+    Evaluation
+    evaluate(const VectorType                &u,
+             const AffineConstraints<double> &constraints,
+             VectorType                      *rhs,
+             MatrixType                      *hessian) override
+    {
+      return energy.evaluate(u, time, constraints, rhs, hessian);
+    }
+
+  private:
+    const EnergyFunctional<dim> &energy;
+    const double                 time;
+  };
 } // namespace Signorini
