@@ -342,15 +342,9 @@ namespace Signorini
           LinearSolver::Info info;
           std::string        message;
           d_raw      = 0.;
-          const bool ok = linear_solver.solve(K, d_raw, b, info, message);
-          stats.linear_iterations += info.iterations;
-          stats.linear_fallbacks += info.used_fallback;
-          if (!ok)
-            {
-              ++stats.linear_failures;
-              stats.linear_message = message;
-              return false;
-            }
+          if (!stats.count_linear_solve(
+                linear_solver.solve(K, d_raw, b, info, message), info, message))
+            return false;
           const double curvature = b * d_raw;
           if (!(curvature > 1e-14 * b.l2_norm() * d_raw.l2_norm()))
             return false;

@@ -121,15 +121,9 @@ namespace Signorini
     std::string        message;
     // Solve H d = -g with the current matrix: is d a descent direction?
     auto solve_for_descent = [&]() {
-      const bool ok = linear_solver.solve(hessian, d, rhs, info, message);
-      statistics.linear_iterations += info.iterations;
-      statistics.linear_fallbacks += info.used_fallback;
-      if (!ok)
-        {
-          ++statistics.linear_failures;
-          statistics.linear_message = message;
-          return false;
-        }
+      if (!statistics.count_linear_solve(
+            linear_solver.solve(hessian, d, rhs, info, message), info, message))
+        return false;
       constraints.distribute(d);
       // A direction that moves a DoF by more than 1000 scene sizes comes
       // from a (nearly) singular Hessian, e.g. a body held only by contact

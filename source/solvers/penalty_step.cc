@@ -89,6 +89,8 @@ namespace Signorini
     };
     // du/dmu = -H^{-1} grad P at a converged stage, for the stage
     // predictor (Newton stages only: it uses their Hessian and solver).
+    // The tangent solves' share of the step's linear solver statistics.
+    NewtonMinimizer::Statistics tangent_solves;
     StageTangent stage_tangent = [&](const double mu, VectorType &u) {
       Contact::PenaltyObjective<dim> stage(energy, term, time, mu, rebuild);
       stage.timer            = &this->timer;
@@ -108,7 +110,9 @@ namespace Signorini
       LinearSolver::Info info;
       std::string        reason;
       u = 0.;
-      if (!this->linear_solver.solve(scene.hessian, u, scene.rhs, info, reason))
+      if (!tangent_solves.count_linear_solve(
+            this->linear_solver.solve(scene.hessian, u, scene.rhs, info, reason),
+            info, reason))
         return false;
       scene.homogeneous_constraints.distribute(u);
       return true;
@@ -142,8 +146,11 @@ namespace Signorini
                            this->progress);
     stats                   = result.last;
     stats.iterations        = result.newton_iterations;
-    stats.linear_iterations = result.linear_iterations; // over all stages
-    stats.linear_fallbacks  = result.linear_fallbacks;
+    // Over all stages and the tangents between them.
+    stats.linear_iterations =
+      result.linear_iterations + tangent_solves.linear_iterations;
+    stats.linear_fallbacks =
+      result.linear_fallbacks + tangent_solves.linear_fallbacks;
     stats.converged         = result.converged;
     stats.reason            = result.reason;
     record.stages           = result.stages;

@@ -71,6 +71,23 @@ namespace Signorini
       double       force_scale          = 0.;
       Evaluation   evaluation;
       std::string  reason;
+
+      /// Count one linear solve that returned @p ok with @p info (and,
+      /// if it failed, @p message); returns @p ok.
+      bool
+      count_linear_solve(const bool                ok,
+                         const LinearSolver::Info &info,
+                         const std::string        &message)
+      {
+        linear_iterations += info.iterations;
+        linear_fallbacks += info.used_fallback;
+        if (!ok)
+          {
+            ++linear_failures;
+            linear_message = message;
+          }
+        return ok;
+      }
     };
 
     NewtonMinimizer(const Parameters   &parameters,
