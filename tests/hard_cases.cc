@@ -82,7 +82,7 @@ main()
     {"stiff_on_soft_block", "ipopt", stiff, 38},
     {"mesh_mismatch", "newton-penalty", mismatch, 43},
     {"mesh_mismatch", "ipopt", mismatch, 71},
-    {"ironing_grazing", "newton-penalty", ironing, 480},
+    {"ironing_grazing", "newton-penalty", ironing, 142},
     {"ironing_grazing", "ipopt", ironing, 535},
     {"ironing_full", "newton-penalty", ironing, 1474},
     {"ironing_full", "ipopt", ironing, 1500},
