@@ -421,19 +421,41 @@ namespace Signorini
         return false;
     }
     constraints.distribute(d);
+    // The Dirichlet increment alone: zero but on the constrained DoFs.
+    VectorType dirichlet(u);
+    dirichlet = 0.;
+    constraints.distribute(dirichlet);
     VectorType trial(u);
-    trial += d;
-    {
-      TimerOutput::Scope scope(timer, "line search");
-      ghosted = trial;
-      e       = objective.evaluate(ghosted, constraints, nullptr, nullptr);
-    }
-    if (!e.admissible)
+    double     scale = 1.;
+    for (;;)
       {
-        reason = "the predictor step leads to an inadmissible state (min J = " +
-                 std::to_string(e.min_J) +
-                 (e.min_J > 0. ? "; the contact model rejects it" : "") + ")";
-        return false;
+        trial = u;
+        trial.add(1. - scale, dirichlet, scale, d);
+        {
+          TimerOutput::Scope scope(timer, "line search");
+          ghosted = trial;
+          e       = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+        }
+        if (e.admissible)
+          break;
+        if (scale == 0.)
+          {
+            reason =
+              "the predictor step leads to an inadmissible state (min J = " +
+              std::to_string(e.min_J) +
+              (e.min_J > 0. ? "; the contact model rejects it" : "") +
+              "), and so does the Dirichlet increment alone";
+            return false;
+          }
+        scale = scale > 1. / 64. ? scale / 2. : 0.;
+      }
+    if (scale < 1.)
+      {
+        progress << "      predictor: the linear step is inadmissible; ";
+        if (scale > 0.)
+          progress << "its free part scaled by " << scale << std::endl;
+        else
+          progress << "the Dirichlet increment alone" << std::endl;
       }
     u = trial;
     return true;

@@ -111,12 +111,6 @@ namespace Signorini
              VectorType                      &rhs);
 
     /**
-     * A tangent predictor for changed Dirichlet data: one linear step
-     * d from H d = -g with the inhomogeneous @p constraints (which move
-     * the Dirichlet values to their new targets), accepted in full if the
-     * new state is admissible. Returns false (u unchanged) otherwise.
-     */
-    /**
      * The scene's size (diameter of its bounding box): no trial step
      * moves a DoF by more than 'Maximum increment' times this.
      */
@@ -126,6 +120,17 @@ namespace Signorini
       length_scale = length;
     }
 
+    /**
+     * A tangent predictor for changed Dirichlet data: one linear step
+     * d from H d = -g with the inhomogeneous @p constraints (which move
+     * the Dirichlet values to their new targets). Taken in full if the
+     * new state is admissible; else its free part is halved until it is
+     * (down to the Dirichlet increment alone: d_D + s (d - d_D), s = 1,
+     * 1/2, ..., 1/64, 0), so that a linear step that overshoots (through
+     * the contact layer, or to J <= 0) does not cost a load step cut.
+     * Returns false (u unchanged) if even the Dirichlet increment alone
+     * is inadmissible.
+     */
     bool
     predictor(Objective                       &objective,
               const AffineConstraints<double> &constraints,
