@@ -5,7 +5,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# libopenblas0-serial: Debian's optimised BLAS/LAPACK replaces the reference
+# one through the alternatives system (MUMPS's factorisations are about twice
+# as fast, doc/performance.md). The serial build: MPI ranks and deal.II's
+# threads already use the cores, BLAS threads would oversubscribe them.
 packages=(cmake make g++ pkg-config ccache libdeal.ii-dev coinor-libipopt-dev
+          libopenblas0-serial
           numdiff openmpi-bin gnuplot-nox python3 python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
