@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Compare the two contact solvers on the Hertz rigid-plane scene.
+"""Compare the three rigid-contact solvers on the Hertz rigid-plane scene.
 
-Runs prm/default.prm with Ipopt and with the penalty continuation (Newton)
+Runs prm/default.prm with Ipopt, the program's interior point method and
+the penalty continuation (Newton)
 at several local refinement levels, reads each run's summary.json and
 prints a Markdown table (DOFs, contact nodes inside a, iterations, wall
 time, errors of a and p0 against Hertz, total force error, largest
@@ -46,10 +47,11 @@ def main():
 
     rows = []
     for level in args.levels:
-        for method in ("ipopt", "newton-penalty"):
+        for method in ("ipopt", "interior-point", "newton-penalty"):
             s = run(executable, level, method, args.out)
             q = s["quantities"]
-            iterations = s.get("ipopt iterations", s.get("newton iterations"))
+            iterations = s.get("ipopt iterations", s.get("interior_point iterations",
+                                                       s.get("newton iterations")))
             stages = sum(len(step.get("penalty stages", [])) for step in s["steps"])
             rows.append({
                 "level": level,

@@ -28,7 +28,7 @@ namespace Signorini
   {
     namespace
     {
-      constexpr unsigned int max_variants = 8;
+      constexpr unsigned int max_variants = 12;
 
       // Phases reported per row (TimerOutput sections of a run).
       const std::vector<std::string> phases = {"assembly",
