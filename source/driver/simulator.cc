@@ -173,6 +173,8 @@ namespace Signorini
     const double start_time    = time;
     const double start_elapsed = elapsed(run_timer);
     unsigned int cuts          = 0;
+    // Steps converged in a row at the current (cut) step size.
+    unsigned int since_cut     = 0;
     VectorType  &solution      = scene->solution;
     VectorType   backup(solution);
     while (time < end_time * (1. - 1e-12))
@@ -200,6 +202,7 @@ namespace Signorini
               problem->contact->forces() = backup_forces;
             ++cuts;
             ++report.step_cuts;
+            since_cut = 0;
             dt /= 2.;
             pcout << "  step failed (" << stats.reason << "); cutting to dt = "
                   << dt << std::endl;
@@ -223,10 +226,19 @@ namespace Signorini
         record.cuts_before = cuts;
         cuts               = 0;
         complete_step(time, step, stats, record, "solution");
-        // Grow back towards the requested step after easy steps.
-        if (stats.iterations <= 5 * std::max<std::size_t>(1, record.stages.size()) &&
-            dt < full_step)
-          dt = std::min(2. * dt, full_step);
+        // Grow back towards the requested step after an easy step, or
+        // after two steps in a row at the cut size: a cut is for a hard
+        // stretch of the path, not for the rest of it (otherwise one cut
+        // early in a long path, where each step takes many iterations,
+        // multiplies its step count).
+        ++since_cut;
+        if (dt < full_step &&
+            (stats.iterations <= 5 * std::max<std::size_t>(1, record.stages.size()) ||
+             since_cut >= 2))
+          {
+            dt        = std::min(2. * dt, full_step);
+            since_cut = 0;
+          }
         snapshot();
         checkpoint(run_timer, false);
 

@@ -76,6 +76,17 @@ namespace Signorini
                       "stage's solution with the square root of its "
                       "jump in mu, at most this many times per load step; "
                       "then the load step fails (and is cut).");
+    prm.declare_entry("Stage tolerance",
+                      "1e-6",
+                      Patterns::Double(0.),
+                      "Relative residual tolerance (|gradient| over the "
+                      "force scale, as Newton > Residual tolerance) at "
+                      "which a stage stops while it may not be the last; "
+                      "once a stage meets the penetration tolerance it is "
+                      "finished to the Newton tolerance. An intermediate "
+                      "stage's solution only starts the next one, so "
+                      "solving it to round-off is wasted. 0: every stage "
+                      "to the Newton tolerance.");
     prm.declare_entry("Stage predictor",
                       "tangent",
                       Patterns::Selection("tangent|extrapolation|none"),
@@ -121,6 +132,7 @@ namespace Signorini
     max_penalty_ratio     = prm.get_double("Maximum penalty ratio");
     stage_iteration_target = prm.get_integer("Stage iteration target");
     max_stage_retries      = prm.get_integer("Maximum stage retries");
+    stage_tolerance        = prm.get_double("Stage tolerance");
     {
       const std::string predictor = prm.get("Stage predictor");
       stage_predictor = predictor == "tangent" ?
@@ -233,7 +245,7 @@ namespace Signorini
         progress << "  stage " << result.stages.size() + 1
                  << ": mu = " << std::scientific << std::setprecision(3)
                  << mu << std::defaultfloat << std::endl;
-        result.last = solve_stage(mu, u);
+        result.last = solve_stage(mu, u, parameters.stage_tolerance);
         result.newton_iterations += result.last.iterations;
         result.linear_iterations += result.last.linear_iterations;
         result.linear_fallbacks += result.last.linear_fallbacks;
@@ -267,7 +279,33 @@ namespace Signorini
         ghosted = u;
         contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
                             &result.forces);
-        const auto summary = contact.measure(ghosted, result.forces);
+        auto summary = contact.measure(ghosted, result.forces);
+        // The last stage (tolerance met, or the cap reached): finish it to
+        // the Newton tolerance from where the loose solve stopped.
+        if (parameters.stage_tolerance > 0. &&
+            (summary.max_penetration_ratio <= parameters.penetration_tolerance ||
+             mu >= mu_cap * (1. - 1e-12)))
+          {
+            const unsigned int loose_iterations = result.last.iterations;
+            result.last = solve_stage(mu, u, 0.);
+            result.newton_iterations += result.last.iterations;
+            result.linear_iterations += result.last.linear_iterations;
+            result.linear_fallbacks += result.last.linear_fallbacks;
+            result.last.iterations += loose_iterations;
+            if (!result.last.converged)
+              {
+                result.stages.push_back({mu, result.last.iterations, 0., false});
+                result.reason = "penalty stage " +
+                                std::to_string(result.stages.size()) +
+                                ", finished to the Newton tolerance: " +
+                                result.last.reason;
+                return result;
+              }
+            ghosted = u;
+            contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
+                                &result.forces);
+            summary = contact.measure(ghosted, result.forces);
+          }
         result.stages.push_back(
           {mu, result.last.iterations, summary.max_penetration_ratio, true});
         progress << "    penetration / h = " << std::scientific

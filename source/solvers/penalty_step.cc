@@ -58,7 +58,10 @@ namespace Signorini
     auto                         &scene  = this->scene;
     auto                         &energy = *this->problem.energy;
     auto                         &term   = *this->problem.contact;
-    const ContinuationParameters &continuation = this->parameters.solver.penalty;
+    ContinuationParameters continuation = this->parameters.solver.penalty;
+    // Ipopt solves each stage to its own tolerance: no loose stages.
+    if (ipopt)
+      continuation.stage_tolerance = 0.;
     NewtonMinimizer               newton = this->newton();
     const double                  mu_start =
       continuation.restart_each_step ?
@@ -81,11 +84,15 @@ namespace Signorini
     }
 
     // Each stage: Newton on G_mu, or Ipopt as an unconstrained minimiser.
-    StageSolver solve_stage = [&](const double mu, VectorType &u) {
+    StageSolver solve_stage = [&](const double mu, VectorType &u,
+                                  const double loose_tolerance) {
       Contact::PenaltyObjective<dim> stage(energy, term, time, mu, rebuild);
       stage.timer = &this->timer;
-      return newton.minimize(stage, scene.homogeneous_constraints, u,
-                             scene.solution_ghosted, scene.hessian, scene.rhs);
+      NewtonMinimizer stage_newton = newton;
+      stage_newton.loosen(loose_tolerance);
+      return stage_newton.minimize(stage, scene.homogeneous_constraints, u,
+                                   scene.solution_ghosted, scene.hessian,
+                                   scene.rhs);
     };
     // du/dmu = -H^{-1} grad P at a converged stage, for the stage
     // predictor (Newton stages only: it uses their Hessian and solver).
@@ -121,7 +128,7 @@ namespace Signorini
       {
         const AffineConstraints<double> target =
           scene.boundary_constraints(time, false);
-        solve_stage = [&, target](const double mu, VectorType &u) {
+        solve_stage = [&, target](const double mu, VectorType &u, const double) {
           scene.solution_ghosted = u;
           const auto result = ipopt->solve(time, target, scene.solution_ghosted, mu);
           u                 = scene.solution_ghosted;

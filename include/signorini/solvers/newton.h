@@ -4,6 +4,8 @@
 #include <signorini/problem/objective.h>
 #include <signorini/types.h>
 
+#include <algorithm>
+
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -114,6 +116,20 @@ namespace Signorini
      * The scene's size (diameter of its bounding box): no trial step
      * moves a DoF by more than 'Maximum increment' times this.
      */
+    /**
+     * Stop at the relative residual tolerance @p tolerance and at an
+     * energy decrease of @p tolerance times the energy scale, where these
+     * are looser than the parameter file's (a penalty stage that only
+     * starts the next one).
+     */
+    void
+    loosen(const double tolerance)
+    {
+      parameters.residual_tolerance =
+        std::max(parameters.residual_tolerance, tolerance);
+      parameters.energy_tolerance = std::max(parameters.energy_tolerance, tolerance);
+    }
+
     void
     set_length_scale(const double length)
     {

@@ -40,6 +40,9 @@ namespace Signorini
     double       max_penalty_ratio     = 1e14; // cap of mu / mu_0
     unsigned int stage_iteration_target = 20;
     unsigned int max_stage_retries      = 3;
+    // Relative residual tolerance of a stage that is not known to be the
+    // last (0: every stage to the Newton tolerance).
+    double       stage_tolerance        = 1e-6;
     // How the next stage starts: the tangent du/dmu at the converged
     // stage (one linear solve), or the extrapolation from two stages.
     enum class StagePredictor
@@ -91,10 +94,12 @@ namespace Signorini
    * Minimises G_mu from @p u (locally owned entries, satisfying the
    * homogeneous constraints) and leaves the last accepted iterate in
    * @p u: Newton with a line search, or Ipopt as an unconstrained
-   * minimiser (the poster's choice).
+   * minimiser (the poster's choice). A positive @p loose_tolerance is
+   * the relative residual tolerance to stop at instead of the Newton
+   * one, if larger (a stage that may not be the last; Ipopt ignores it).
    */
-  using StageSolver =
-    std::function<NewtonMinimizer::Statistics(const double mu, VectorType &u)>;
+  using StageSolver = std::function<NewtonMinimizer::Statistics(
+    const double mu, VectorType &u, const double loose_tolerance)>;
 
   /**
    * The tangent of the stage solutions: replaces @p u (the converged
