@@ -312,11 +312,60 @@ namespace Signorini
         for (const auto &f : faces2)
           for (unsigned int v = 0; v < n_face_vertices; ++v)
             ++count[key(f, v)];
-        for (auto &f : faces2)
+        // In 3D an edge of one face is not a free end if it lies along
+        // edges of other faces: where the refinement level changes, a
+        // coarse face's edge holds two fine faces' edges (with a hanging
+        // vertex between them), none of them shared as a vertex pair, yet
+        // the surface goes on across them. Such edges overlap another
+        // face's edge in the reference configuration.
+        std::set<std::pair<unsigned int, unsigned int>> continued;
+        if (dim == 3)
           {
+            struct Edge
+            {
+              unsigned int face, vertex;
+              Point<dim>   a, b;
+            };
+            std::vector<Edge> single;
+            for (unsigned int i = 0; i < faces2.size(); ++i)
+              for (unsigned int v = 0; v < n_face_vertices; ++v)
+                if (count[key(faces2[i], v)] == 1)
+                  {
+                    Edge e{i, v, Point<dim>(), Point<dim>()};
+                    const unsigned int w = (v + 1) % n_face_vertices;
+                    for (unsigned int c = 0; c < dim; ++c)
+                      {
+                        e.a[c] = faces2[i].X[v * dim + c];
+                        e.b[c] = faces2[i].X[w * dim + c];
+                      }
+                    single.push_back(e);
+                  }
+            // Whether p lies on the segment [a, b] (to round-off of its length).
+            const auto on_segment = [](const Point<dim> &p, const Point<dim> &a,
+                                       const Point<dim> &b) {
+              const Tensor<1, dim> ab = b - a;
+              const double         l2 = ab.norm_square();
+              const double         s  = ((p - a) * ab) / l2;
+              if (s < -1e-10 || s > 1. + 1e-10)
+                return false;
+              return (p - (a + s * ab)).norm_square() <= 1e-20 * l2;
+            };
+            for (const auto &e : single)
+              for (const auto &o : single)
+                if (o.face != e.face &&
+                    ((on_segment(e.a, o.a, o.b) && on_segment(e.b, o.a, o.b)) ||
+                     (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b))))
+                  {
+                    continued.insert({e.face, e.vertex});
+                    break;
+                  }
+          }
+        for (unsigned int i = 0; i < faces2.size(); ++i)
+          {
+            auto &f = faces2[i];
             f.end_stretch.fill(-1.);
             for (unsigned int v = 0; v < n_face_vertices; ++v)
-              if (count[key(f, v)] == 1)
+              if (count[key(f, v)] == 1 && continued.count({i, v}) == 0)
                 {
                   f.end_stretch[v] = prm.end_stretch;
                   if (dim == 3)
