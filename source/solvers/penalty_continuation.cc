@@ -235,6 +235,21 @@ namespace Signorini
                    << ")" << std::endl;
         }
     };
+    // Solve the stage at mu from u, adding its solver counts to the
+    // result's.
+    const auto run_stage = [&](const double loose_tolerance) {
+      result.last = solve_stage(mu, u, loose_tolerance);
+      result.newton_iterations += result.last.iterations;
+      result.linear_iterations += result.last.linear_iterations;
+      result.linear_fallbacks += result.last.linear_fallbacks;
+    };
+    // The penalty forces at u (into result.forces) and their measure.
+    const auto measure_stage = [&]() {
+      ghosted = u;
+      contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
+                          &result.forces);
+      return contact.measure(ghosted, result.forces);
+    };
     while (n_converged < parameters.max_stages)
       {
         if (n_converged >= 1)
@@ -245,10 +260,7 @@ namespace Signorini
         progress << "  stage " << result.stages.size() + 1
                  << ": mu = " << std::scientific << std::setprecision(3)
                  << mu << std::defaultfloat << std::endl;
-        result.last = solve_stage(mu, u, parameters.stage_tolerance);
-        result.newton_iterations += result.last.iterations;
-        result.linear_iterations += result.last.linear_iterations;
-        result.linear_fallbacks += result.last.linear_fallbacks;
+        run_stage(parameters.stage_tolerance);
         if (!result.last.converged)
           {
             result.stages.push_back({mu, result.last.iterations, 0., false});
@@ -276,10 +288,7 @@ namespace Signorini
             result.reason = msg.str();
             return result;
           }
-        ghosted = u;
-        contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
-                            &result.forces);
-        auto summary = contact.measure(ghosted, result.forces);
+        auto summary = measure_stage();
         // The last stage (tolerance met, or the cap reached): finish it to
         // the Newton tolerance from where the loose solve stopped.
         if (parameters.stage_tolerance > 0. &&
@@ -287,10 +296,7 @@ namespace Signorini
              mu >= mu_cap * (1. - 1e-12)))
           {
             const unsigned int loose_iterations = result.last.iterations;
-            result.last = solve_stage(mu, u, 0.);
-            result.newton_iterations += result.last.iterations;
-            result.linear_iterations += result.last.linear_iterations;
-            result.linear_fallbacks += result.last.linear_fallbacks;
+            run_stage(0.);
             result.last.iterations += loose_iterations;
             if (!result.last.converged)
               {
@@ -301,10 +307,7 @@ namespace Signorini
                                 result.last.reason;
                 return result;
               }
-            ghosted = u;
-            contact.add_penalty(ghosted, mu, constraints, nullptr, nullptr,
-                                &result.forces);
-            summary = contact.measure(ghosted, result.forces);
+            summary = measure_stage();
           }
         result.stages.push_back(
           {mu, result.last.iterations, summary.max_penetration_ratio, true});

@@ -116,6 +116,12 @@ namespace Signorini
      * The scene's size (diameter of its bounding box): no trial step
      * moves a DoF by more than 'Maximum increment' times this.
      */
+    void
+    set_length_scale(const double length)
+    {
+      length_scale = length;
+    }
+
     /**
      * Stop at the relative residual tolerance @p tolerance and at an
      * energy decrease of @p tolerance times the energy scale, where these
@@ -128,12 +134,6 @@ namespace Signorini
       parameters.residual_tolerance =
         std::max(parameters.residual_tolerance, tolerance);
       parameters.energy_tolerance = std::max(parameters.energy_tolerance, tolerance);
-    }
-
-    void
-    set_length_scale(const double length)
-    {
-      length_scale = length;
     }
 
     /**

@@ -95,8 +95,9 @@ namespace Signorini
    * homogeneous constraints) and leaves the last accepted iterate in
    * @p u: Newton with a line search, or Ipopt as an unconstrained
    * minimiser (the poster's choice). A positive @p loose_tolerance is
-   * the relative residual tolerance to stop at instead of the Newton
-   * one, if larger (a stage that may not be the last; Ipopt ignores it).
+   * the relative residual and energy-decrease tolerance to stop at
+   * instead of the Newton ones, where larger (a stage that may not be
+   * the last; NewtonMinimizer::loosen()). Ipopt stages ignore it.
    */
   using StageSolver = std::function<NewtonMinimizer::Statistics(
     const double mu, VectorType &u, const double loose_tolerance)>;
