@@ -3,10 +3,13 @@
 // one global refinement less, 3770 DoFs, penalty continuation) and 3D
 // SSNV187 (prm/ssnv187_3d_c20.prm refined once, 2187 DoFs) solved
 // - on one rank with Amesos_Mumps and each deterministic ordering (pord,
-//   the reference; amd, amf, qamd), with Amesos_Klu, and with CG + AMG
-//   (rigid motions as near null space, Chebyshev and block Gauss-Seidel
-//   smoothers, CG to 1e-12, no fallback to the direct solver);
-// - on two ranks with the direct solver (auto: KLU) and CG + AMG.
+//   the reference; amd, amf, qamd), with Amesos_Klu, PETSc_Mumps (LDL^T),
+//   PETSc_Cholmod, and with CG + AMG (rigid motions as near null space,
+//   Chebyshev and block Gauss-Seidel smoothers, CG to 1e-12, no fallback
+//   to the direct solver);
+// - on two ranks with the direct solver (auto: PETSc_Mumps, distributed),
+//   Amesos_Mumps (distributed), Amesos_Klu (gathered to one rank) and
+//   CG + AMG.
 // Each run converges, takes as many load steps as the reference, and its
 // quantities (contact force, Hertz a and p0, the largest penetration; the
 // top displacement and the reaction) agree with the reference's to 1e-8
@@ -58,9 +61,13 @@ main()
     {"mumps_amf", "    set Direct solver = Amesos_Mumps\n    set MUMPS ordering = amf\n", false},
     {"mumps_qamd", "    set Direct solver = Amesos_Mumps\n    set MUMPS ordering = qamd\n", false},
     {"klu", "    set Direct solver = Amesos_Klu\n", false},
+    {"petsc_mumps", "    set Direct solver = PETSc_Mumps\n", false},
+    {"petsc_cholmod", "    set Direct solver = PETSc_Cholmod\n", false},
     {"cg_amg", cg, false},
     {"cg_amg_gauss_seidel", cg + "    set AMG smoother = symmetric block Gauss-Seidel\n", false},
     {"direct_2_ranks", "    set Direct solver = auto\n", true},
+    {"amesos_mumps_2_ranks", "    set Direct solver = Amesos_Mumps\n", true},
+    {"klu_2_ranks", "    set Direct solver = Amesos_Klu\n", true},
     {"cg_amg_2_ranks", cg, true}};
 
   struct Scene

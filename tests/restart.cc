@@ -24,6 +24,15 @@ using RunOutput::verdict;
 namespace
 {
   const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
+  // Two ranks: KLU on the gathered matrix, whose answers are the same to
+  // the last bit from run to run. MUMPS distributed over the ranks (the
+  // default there) assembles its fronts in the order the messages arrive,
+  // so two runs differ at round-off (measured: a final residual of 3.0e-10
+  // against 3.7e-10), and an exact comparison would test the solver, not
+  // the checkpoint.
+  const std::string klu =
+    "subsection Solver\n  subsection Linear solver\n"
+    "    set Direct solver = Amesos_Klu\n  end\nend\n";
 
   bool
   same(const std::string &a, const std::string &b)
@@ -106,7 +115,8 @@ main()
     four_steps + "subsection Mesh\n  set Global refinements = 2\nend\n"
                  "subsection Solver\n  set Method = interior-point\nend\n";
   check_scene(out, "interior_point", "default.prm", interior_point, {1, 3});
-  check_scene(out, "interior_point_ranks", "default.prm", interior_point, {2}, mpirun);
+  check_scene(out, "interior_point_ranks", "default.prm", interior_point + klu,
+              {2}, mpirun);
   // Refinement cycles: checkpoints in the load path (0: after step 1),
   // after cycle 0 is recorded (2), on cycle 1's mesh before its solve (3)
   // and after it (4).
@@ -115,7 +125,7 @@ main()
               "subsection Mesh refinement\n  set Number of cycles = 2\nend\n",
               {0, 2, 3, 4});
   // Two ranks.
-  check_scene(out, "ranks", "hertz_block.prm", four_steps, {2}, mpirun);
+  check_scene(out, "ranks", "hertz_block.prm", four_steps + klu, {2}, mpirun);
 
   // A restart that cannot be honoured.
   {

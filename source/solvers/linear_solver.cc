@@ -1,5 +1,6 @@
 #include <signorini/input_error.h>
 #include <signorini/solvers/linear_solver.h>
+#include <signorini/solvers/petsc_direct_solver.h>
 
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -32,24 +33,25 @@ namespace Signorini
                       "minres-amg: MINRES (symmetric indefinite systems) with "
                       "the same preconditioner, which itself assumes a "
                       "definite matrix.");
-    prm.declare_entry("Direct solver",
-                      "auto",
-                      Patterns::Selection("auto|Amesos_Klu|Amesos_Mumps"),
-                      "The Amesos direct solver. Amesos_Mumps (multifrontal "
-                      "with a fill-reducing ordering) is about 2.3x faster "
-                      "than Amesos_Klu on the 51k-DoF Hertz mesh. Debian's "
-                      "Amesos links the parallel MUMPS, but on 2 ranks every "
-                      "factorisation of the Hertz penalty Hessian (3770 "
-                      "DoFs) failed: MUMPS error -9 (workspace too small) on "
-                      "one rank, and with ICNTL(14) = 100 error -10 "
-                      "(singular) on both, where one rank factorises the "
-                      "same matrices; so Amesos_Mumps runs on one MPI rank "
-                      "only. KLU gathers the matrix to one rank and works "
-                      "with any number of ranks. auto: MUMPS on one rank, "
-                      "KLU on several. Either keeps its symbolic analysis "
-                      "(ordering) while the sparsity pattern of the Hessian "
-                      "is unchanged and redoes only the numeric "
-                      "factorisation.");
+    prm.declare_entry(
+      "Direct solver",
+      "auto",
+      Patterns::Selection("auto|Amesos_Klu|Amesos_Mumps|PETSc_Mumps|PETSc_Cholmod"),
+      "The sparse direct solver. Every one keeps its symbolic analysis "
+      "(ordering) while the sparsity pattern of the Hessian is unchanged "
+      "and redoes only the numeric factorisation. "
+      "Amesos_Mumps: MUMPS' LU through Trilinos, distributed over the "
+      "ranks. Amesos_Klu: KLU on the matrix gathered to one rank, any "
+      "number of ranks, about 2.3x slower than MUMPS on the 51k-DoF Hertz "
+      "mesh. PETSc_Mumps: MUMPS' symmetric LDL^T through PETSc, "
+      "distributed over all ranks (no gathering), with the sequential "
+      "analysis and the 'MUMPS ordering'; it also counts the negative "
+      "eigenvalues of the matrix. PETSc_Cholmod: CHOLMOD's supernodal "
+      "Cholesky (SuiteSparse, METIS or AMD ordering), one MPI rank only; "
+      "it fails on a matrix that is not positive definite, which the "
+      "Newton and interior point iterations answer with a diagonal shift. "
+      "auto: Amesos_Mumps on one rank, PETSc_Mumps on several "
+      "(doc/performance.md, 'Linear solvers').");
     prm.declare_entry("MUMPS ordering",
                       "pord",
                       Patterns::Selection("pord|amf|amd|qamd|scotch|auto"),
@@ -120,13 +122,13 @@ namespace Signorini
     direct_solver         = prm.get("Direct solver");
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     if (direct_solver == "auto")
-      direct_solver = (ranks == 1 ? "Amesos_Mumps" : "Amesos_Klu");
-    else if (direct_solver == "Amesos_Mumps" && ranks > 1)
+      direct_solver = (ranks == 1 ? "Amesos_Mumps" : "PETSc_Mumps");
+    else if (direct_solver == "PETSc_Cholmod" && ranks > 1)
       throw InputError("Solver > Linear solver > Direct solver",
-                       "Amesos_Mumps fails on several MPI ranks (every "
-                       "factorisation of the Hertz Hessian on 2 ranks ends in "
-                       "MUMPS error -9 or -10); this run has " +
-                         std::to_string(ranks) + " ranks: use Amesos_Klu or auto");
+                       "PETSc_Cholmod runs on one MPI rank only; this run "
+                       "has " + std::to_string(ranks) +
+                         " ranks: use PETSc_Mumps, Amesos_Mumps, Amesos_Klu "
+                         "or auto");
     const std::string ordering = prm.get("MUMPS ordering");
     mumps_ordering = (ordering == "amd"    ? 0 :
                       ordering == "amf"    ? 2 :
@@ -177,9 +179,31 @@ namespace Signorini
     forget_analysis();
   }
 
+  unsigned int
+  LinearSolver::n_symbolic_factorizations() const
+  {
+    return direct.n_symbolic +
+           (direct.petsc ? direct.petsc->n_symbolic_factorizations() : 0);
+  }
+
+  unsigned int
+  LinearSolver::n_numeric_factorizations() const
+  {
+    return direct.n_numeric +
+           (direct.petsc ? direct.petsc->n_numeric_factorizations() : 0);
+  }
+
+  int
+  LinearSolver::negative_pivots() const
+  {
+    return direct.petsc ? direct.petsc->negative_pivots() : -1;
+  }
+
   void
   LinearSolver::forget_analysis() const
   {
+    if (direct.petsc)
+      direct.petsc->clear();
     direct.solver.reset();
     direct.problem.reset();
     direct.matrix.reset();
@@ -187,38 +211,55 @@ namespace Signorini
     direct.factorized   = false;
   }
 
-  namespace
+
+  bool
+  LinearSolver::solve_petsc(const MatrixType &H,
+                            VectorType       &x,
+                            const VectorType &b,
+                            std::string      &message) const
   {
-    /// A hash of the locally owned rows' sparsity pattern (global column
-    /// indices), to tell whether a symbolic analysis still applies.
-    std::size_t
-    pattern_hash(const Epetra_CrsMatrix &A)
-    {
-      std::size_t h    = 1469598103934665603ull;
-      const auto  mix = [&h](const long long v) {
-        h ^= static_cast<std::size_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) +
-             (h >> 2);
-      };
-      const Epetra_CrsGraph &graph = A.Graph();
-      const Epetra_BlockMap &cols  = graph.ColMap();
-      const Epetra_BlockMap &rows  = graph.RowMap();
-      mix(graph.NumGlobalRows64());
-      for (int r = 0; r < graph.NumMyRows(); ++r)
-        {
-          int  n       = 0;
-          int *indices = nullptr;
-          graph.ExtractMyRowView(r, n, indices);
-          mix(rows.GID64(r));
-          mix(n);
-          for (int k = 0; k < n; ++k)
-            mix(cols.GID64(indices[k]));
-        }
-      return h;
-    }
-  } // namespace
+    if (!direct.petsc)
+      direct.petsc = std::make_unique<PETScDirectSolver>(
+        parameters.direct_solver == "PETSc_Cholmod" ?
+          PETScDirectSolver::Package::cholmod :
+          PETScDirectSolver::Package::mumps,
+        parameters.mumps_ordering);
+    return direct.petsc->solve(
+      H.trilinos_matrix(),
+      x.trilinos_vector(),
+      static_cast<const Epetra_MultiVector &>(b.trilinos_vector()),
+      message);
+  }
 
   bool
   LinearSolver::solve_direct(const MatrixType &H,
+                             VectorType       &x,
+                             const VectorType &b,
+                             std::string      &message) const
+  {
+    if (parameters.direct_solver.rfind("PETSc_", 0) == 0)
+      {
+        if (!solve_petsc(H, x, b, message))
+          return false;
+      }
+    else if (!solve_amesos(H, x, b, message))
+      return false;
+    // Every rank must take the same decision: the callers branch into
+    // collective operations on it.
+    bool finite = true;
+    for (const auto i : x.locally_owned_elements())
+      finite = finite && std::isfinite(x[i]);
+    if (Utilities::MPI::min(finite ? 1 : 0, x.get_mpi_communicator()) == 0)
+      {
+        message = "direct solver returned non-finite values (singular "
+                  "Hessian: is the body held against rigid motion?)";
+        return false;
+      }
+    return true;
+  }
+
+  bool
+  LinearSolver::solve_amesos(const MatrixType &H,
                              VectorType       &x,
                              const VectorType &b,
                              std::string      &message) const
@@ -240,7 +281,7 @@ namespace Signorini
         // numeric factorisation. Amesos keeps a pointer to the matrix (and
         // uses it even in its destructor), so it gets a copy owned here:
         // the caller's matrix may be rebuilt or freed at any time.
-        const std::size_t hash  = pattern_hash(A);
+        const std::size_t hash  = sparsity_pattern_hash(A);
         const bool        same  = direct.solver && direct.pattern_hash == hash;
         const bool        reuse = Utilities::MPI::min(same ? 1 : 0, comm) == 1;
         bool              same_values = reuse && direct.factorized;
@@ -324,17 +365,6 @@ namespace Signorini
       {
         forget_analysis();
         message = std::string("direct solver failed: ") + e.what();
-        return false;
-      }
-    // Every rank must take the same decision: the callers branch into
-    // collective operations on it.
-    bool finite = true;
-    for (const auto i : x.locally_owned_elements())
-      finite = finite && std::isfinite(x[i]);
-    if (Utilities::MPI::min(finite ? 1 : 0, x.get_mpi_communicator()) == 0)
-      {
-        message = "direct solver returned non-finite values (singular "
-                  "Hessian: is the body held against rigid motion?)";
         return false;
       }
     return true;

@@ -23,6 +23,8 @@ namespace Signorini
 {
   using namespace dealii;
 
+  class PETScDirectSolver;
+
   /**
    * The near null space of an elasticity operator for algebraic multigrid:
    * the rigid motions evaluated at the DoF support points, for the locally
@@ -42,8 +44,10 @@ namespace Signorini
 
   /**
    * Solves the Newton systems H d = b. "direct" factorises H with Trilinos
-   * Amesos (MUMPS or KLU, both with MPI) and keeps the symbolic analysis
-   * while the sparsity pattern of H is unchanged; "cg-amg" and
+   * Amesos (MUMPS on one rank, KLU on a matrix gathered to one rank) or
+   * with PETSc (MUMPS' LDL^T distributed over the ranks, CHOLMOD's
+   * Cholesky on one rank; PETScDirectSolver) and keeps the symbolic
+   * analysis while the sparsity pattern of H is unchanged; "cg-amg" and
    * "minres-amg" use a Krylov method preconditioned by Trilinos ML
    * algebraic multigrid with the rigid motions as near null space. When a
    * Krylov solve does not converge the solver falls back to the direct one
@@ -111,18 +115,21 @@ namespace Signorini
 
     /// How many symbolic analyses the direct solver has done so far.
     unsigned int
-    n_symbolic_factorizations() const
-    {
-      return direct.n_symbolic;
-    }
+    n_symbolic_factorizations() const;
 
     /// How many numeric factorisations the direct solver has done so far
     /// (a second solve with the same matrix values reuses the last one).
     unsigned int
-    n_numeric_factorizations() const
-    {
-      return direct.n_numeric;
-    }
+    n_numeric_factorizations() const;
+
+    /**
+     * The number of negative eigenvalues of the matrix the direct solver
+     * factorised last, where the factorisation tells it (PETSc_Mumps:
+     * MUMPS' negative pivots; PETSc_Cholmod: 1 if it failed as not
+     * positive definite, else 0); -1 otherwise.
+     */
+    int
+    negative_pivots() const;
 
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
@@ -142,6 +149,18 @@ namespace Signorini
     }
 
   private:
+    bool
+    solve_petsc(const MatrixType &H,
+                VectorType       &x,
+                const VectorType &b,
+                std::string      &message) const;
+
+    bool
+    solve_amesos(const MatrixType &H,
+                 VectorType       &x,
+                 const VectorType &b,
+                 std::string      &message) const;
+
     bool
     solve_direct(const MatrixType &H,
                  VectorType       &x,
@@ -172,6 +191,8 @@ namespace Signorini
       /// The solver holds the factorisation of the matrix copy's values.
       bool                                  factorized = false;
       unsigned int                          n_numeric  = 0;
+      /// The PETSc direct solvers (PETSc_Mumps, PETSc_Cholmod) instead.
+      std::unique_ptr<PETScDirectSolver>    petsc;
     };
 
     Parameters          parameters;

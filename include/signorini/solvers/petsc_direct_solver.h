@@ -1,0 +1,103 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+class Epetra_CrsMatrix;
+class Epetra_MultiVector;
+
+namespace Signorini
+{
+  /**
+   * A sparse direct solver of PETSc's for the program's Trilinos (Epetra)
+   * matrices: the locally owned rows are copied into a PETSc matrix of the
+   * same parallel layout (no gathering to one rank), factorised and
+   * solved; the vectors are handed over without a copy.
+   *
+   * - mumps: MUMPS through PETSc, distributed over every rank, as a
+   *   symmetric LDL^T factorisation (MUMPS SYM = 2: the Hessians are
+   *   symmetric, possibly indefinite), with MUMPS' sequential analysis and
+   *   a deterministic ordering (ICNTL(7)); it reports the inertia of the
+   *   matrix (the negative pivots, MUMPS INFOG(12)).
+   * - cholmod: CHOLMOD's supernodal Cholesky (SuiteSparse, one rank), with
+   *   its own choice between AMD and METIS nested dissection; it fails on a
+   *   matrix that is not positive definite, which is how it reports the
+   *   inertia (negative_pivots() is then 1, else 0).
+   *
+   * The symbolic analysis is kept while the sparsity pattern of the matrix
+   * is unchanged on every rank; the numeric factorisation is redone only
+   * when the values change (a second right-hand side for one matrix reuses
+   * it).
+   */
+  class PETScDirectSolver
+  {
+  public:
+    enum class Package
+    {
+      mumps,
+      cholmod
+    };
+
+    PETScDirectSolver(Package package, int mumps_ordering);
+    ~PETScDirectSolver();
+
+    /**
+     * Solve A x = b. Returns false if the factorisation or the solve
+     * failed (@p message says why; for a matrix that is singular or, with
+     * CHOLMOD, not positive definite, the reason says so). Collective.
+     */
+    bool
+    solve(const Epetra_CrsMatrix   &A,
+          Epetra_MultiVector       &x,
+          const Epetra_MultiVector &b,
+          std::string              &message);
+
+    /// Forget the analysis and the factorisation.
+    void
+    clear();
+
+    unsigned int
+    n_symbolic_factorizations() const
+    {
+      return n_symbolic;
+    }
+
+    unsigned int
+    n_numeric_factorizations() const
+    {
+      return n_numeric;
+    }
+
+    /**
+     * The number of negative eigenvalues of the last matrix factorised, or
+     * -1 if unknown (no factorisation yet). CHOLMOD only tells whether
+     * there is one: 1 when its factorisation failed for that reason.
+     */
+    int
+    negative_pivots() const
+    {
+      return negative;
+    }
+
+    /// The name of the package and its factorisation, for summaries.
+    static std::string
+    name(Package package);
+
+  private:
+    struct State;
+    Package                package;
+    int                    mumps_ordering;
+    std::unique_ptr<State> state;
+    unsigned int           n_symbolic = 0;
+    unsigned int           n_numeric  = 0;
+    int                    negative   = -1;
+  };
+
+  /// A hash of the locally owned rows' sparsity pattern (global column
+  /// indices in their stored order), to tell whether a symbolic analysis
+  /// still applies. Local: compare it on every rank.
+  std::size_t
+  sparsity_pattern_hash(const Epetra_CrsMatrix &A);
+} // namespace Signorini

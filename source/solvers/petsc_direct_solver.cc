@@ -1,0 +1,367 @@
+#include <signorini/solvers/petsc_direct_solver.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Epetra_CrsGraph.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_MpiComm.h>
+#include <Epetra_MultiVector.h>
+#include <petscksp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace Signorini
+{
+  std::size_t
+  sparsity_pattern_hash(const Epetra_CrsMatrix &A)
+  {
+    std::size_t h   = 1469598103934665603ull;
+    const auto  mix = [&h](const long long v) {
+      h ^= static_cast<std::size_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) +
+           (h >> 2);
+    };
+    const Epetra_CrsGraph &graph = A.Graph();
+    const Epetra_BlockMap &cols  = graph.ColMap();
+    const Epetra_BlockMap &rows  = graph.RowMap();
+    mix(graph.NumGlobalRows64());
+    for (int r = 0; r < graph.NumMyRows(); ++r)
+      {
+        int  n       = 0;
+        int *indices = nullptr;
+        graph.ExtractMyRowView(r, n, indices);
+        mix(rows.GID64(r));
+        mix(n);
+        for (int k = 0; k < n; ++k)
+          mix(cols.GID64(indices[k]));
+      }
+    return h;
+  }
+
+  namespace
+  {
+    /// A PETSc call that failed (not a failed factorisation, which PETSc
+    /// reports as the factor's error type): throw with its message.
+    void
+    check(const PetscErrorCode code, const char *what)
+    {
+      if (code == 0)
+        return;
+      const char *text = nullptr;
+      PetscErrorMessage(code, &text, nullptr);
+      throw std::runtime_error(std::string("PETSc ") + what + " failed: " +
+                               (text ? text : "error " + std::to_string(code)));
+    }
+  } // namespace
+
+  /// The PETSc objects of one sparsity pattern.
+  struct PETScDirectSolver::State
+  {
+    MPI_Comm            comm = MPI_COMM_NULL;
+    Mat                 matrix = nullptr;
+    KSP                 ksp    = nullptr;
+    std::size_t         hash   = 0;
+    PetscInt            first  = 0;
+    PetscInt            n_local = 0;
+    PetscInt            n_global = 0;
+    /// The values of the matrix last copied in, in Epetra's order, and
+    /// whether PETSc holds their factorisation.
+    std::vector<double> values;
+    bool                factorized = false;
+
+    ~State()
+    {
+      if (ksp)
+        KSPDestroy(&ksp);
+      if (matrix)
+        MatDestroy(&matrix);
+    }
+  };
+
+  PETScDirectSolver::PETScDirectSolver(const Package package,
+                                       const int     mumps_ordering)
+    : package(package)
+    , mumps_ordering(mumps_ordering)
+  {
+    // CHOLMOD picks a simplicial LDL^T for small or very sparse matrices,
+    // which factorises indefinite matrices without complaint; the
+    // supernodal LL^T fails on them, which is what tells the Newton and
+    // interior point iterations to shift the diagonal. Ask for it always
+    // (unless the command line set it).
+    if (package == Package::cholmod)
+      {
+        // CHOLMOD's own warning on stderr would repeat what the solve's
+        // message says.
+        for (const auto &[key, value] :
+             {std::pair<const char *, const char *>{"-mat_cholmod_factor",
+                                                    "SUPERNODAL"},
+              {"-mat_cholmod_print", "0"}})
+          {
+            PetscBool set = PETSC_FALSE;
+            PetscOptionsHasName(nullptr, nullptr, key, &set);
+            if (!set)
+              PetscOptionsSetValue(nullptr, key, value);
+          }
+      }
+  }
+
+  PETScDirectSolver::~PETScDirectSolver() = default;
+
+  std::string
+  PETScDirectSolver::name(const Package package)
+  {
+    return package == Package::mumps ? "PETSc_Mumps (distributed LDLT)" :
+                                       "PETSc_Cholmod (supernodal Cholesky)";
+  }
+
+  void
+  PETScDirectSolver::clear()
+  {
+    state.reset();
+  }
+
+  bool
+  PETScDirectSolver::solve(const Epetra_CrsMatrix   &A,
+                           Epetra_MultiVector       &x,
+                           const Epetra_MultiVector &b,
+                           std::string              &message)
+  {
+    const auto *mpi = dynamic_cast<const Epetra_MpiComm *>(&A.Comm());
+    AssertThrow(mpi != nullptr,
+                dealii::ExcMessage("The matrix has no MPI communicator."));
+    const MPI_Comm comm = mpi->Comm();
+    const auto     all  = [comm](const bool v) {
+      int local = v ? 1 : 0, global = 0;
+      MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
+      return global == 1;
+    };
+
+    const Epetra_BlockMap &rows = A.RowMap();
+    const Epetra_BlockMap &cols = A.ColMap();
+    const int              n    = A.NumMyRows();
+    AssertThrow(x.MyLength() == n && b.MyLength() == n &&
+                  x.NumVectors() == 1 && b.NumVectors() == 1,
+                dealii::ExcMessage("The vectors do not match the matrix rows."));
+
+    try
+      {
+        const std::size_t hash = sparsity_pattern_hash(A);
+        if (!all(state && state->hash == hash))
+          {
+            state.reset();
+            // PETSc's parallel matrices own contiguous row ranges in rank
+            // order; deal.II's DoF numbering on a distributed mesh gives
+            // exactly that, which is checked rather than assumed.
+            long long n_before = 0, n_mine = n;
+            MPI_Exscan(&n_mine, &n_before, 1, MPI_LONG_LONG, MPI_SUM, comm);
+            int rank = 0;
+            MPI_Comm_rank(comm, &rank);
+            if (rank == 0)
+              n_before = 0;
+            bool contiguous = true;
+            for (int r = 0; r < n && contiguous; ++r)
+              contiguous = rows.GID64(r) == n_before + r;
+            if (!all(contiguous))
+              {
+                message = name(package) +
+                          ": the rows a rank owns are not one contiguous range "
+                          "in rank order";
+                return false;
+              }
+            if (package == Package::cholmod && A.Comm().NumProc() > 1)
+              {
+                message = name(package) + " runs on one MPI rank only";
+                return false;
+              }
+
+            state           = std::make_unique<State>();
+            state->comm     = comm;
+            state->hash     = hash;
+            state->first    = n_before;
+            state->n_local  = n;
+            state->n_global = A.NumGlobalRows64();
+
+            std::vector<PetscInt> diagonal(n, 0), off_diagonal(n, 0);
+            for (int r = 0; r < n; ++r)
+              {
+                int  m       = 0;
+                int *indices = nullptr;
+                A.Graph().ExtractMyRowView(r, m, indices);
+                for (int k = 0; k < m; ++k)
+                  {
+                    const long long c = cols.GID64(indices[k]);
+                    if (c >= state->first && c < state->first + n)
+                      ++diagonal[r];
+                    else
+                      ++off_diagonal[r];
+                  }
+              }
+            Mat &M = state->matrix;
+            check(MatCreate(comm, &M), "MatCreate");
+            check(MatSetSizes(M, n, n, state->n_global, state->n_global),
+                  "MatSetSizes");
+            check(MatSetType(M, MATAIJ), "MatSetType");
+            check(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
+                  "MatSeqAIJSetPreallocation");
+            check(MatMPIAIJSetPreallocation(
+                    M, 0, diagonal.data(), 0, off_diagonal.data()),
+                  "MatMPIAIJSetPreallocation");
+            // Only the upper triangle is factorised: the Hessians are
+            // symmetric.
+            check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+            check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE),
+                  "MatSetOption");
+            check(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
+                  "MatSetOption");
+
+            check(KSPCreate(comm, &state->ksp), "KSPCreate");
+            check(KSPSetType(state->ksp, KSPPREONLY), "KSPSetType");
+            PC pc = nullptr;
+            check(KSPGetPC(state->ksp, &pc), "KSPGetPC");
+            check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+            // The package's own fill-reducing ordering: PETSc's default for
+            // a factorisation is the natural one, which CHOLMOD would take
+            // as given (and fill the factor of a 34k-DoF 2D Hessian with
+            // gigabytes).
+            check(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
+                  "PCFactorSetMatOrderingType");
+            check(PCFactorSetMatSolverType(pc,
+                                           package == Package::mumps ?
+                                             MATSOLVERMUMPS :
+                                             MATSOLVERCHOLMOD),
+                  "PCFactorSetMatSolverType");
+            state->values.clear();
+            ++n_symbolic;
+          }
+
+        // Copy the values in (row by row, global indices) unless they are
+        // the ones factorised last: then only solve again.
+        State &s = *state;
+        std::vector<double> values;
+        values.reserve(s.values.size());
+        for (int r = 0; r < n; ++r)
+          {
+            int     m = 0;
+            double *v = nullptr;
+            A.ExtractMyRowView(r, m, v);
+            values.insert(values.end(), v, v + m);
+          }
+        const bool same_values = all(s.factorized && values == s.values);
+        if (!same_values)
+          {
+            s.factorized = false;
+            std::vector<PetscInt> indices;
+            std::size_t           offset = 0;
+            for (int r = 0; r < n; ++r)
+              {
+                int  m     = 0;
+                int *local = nullptr;
+                A.Graph().ExtractMyRowView(r, m, local);
+                indices.resize(m);
+                for (int k = 0; k < m; ++k)
+                  indices[k] = static_cast<PetscInt>(cols.GID64(local[k]));
+                const PetscInt row = s.first + r;
+                check(MatSetValues(s.matrix,
+                                   1,
+                                   &row,
+                                   m,
+                                   indices.data(),
+                                   values.data() + offset,
+                                   INSERT_VALUES),
+                      "MatSetValues");
+                offset += m;
+              }
+            check(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY),
+                  "MatAssemblyBegin");
+            check(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY),
+                  "MatAssemblyEnd");
+            s.values = std::move(values);
+            check(KSPSetOperators(s.ksp, s.matrix, s.matrix),
+                  "KSPSetOperators");
+            PC pc = nullptr;
+            check(KSPGetPC(s.ksp, &pc), "KSPGetPC");
+            if (package == Package::mumps)
+              {
+                // The factor exists from here on; its MUMPS controls must be
+                // set before the analysis. ICNTL(28) = 1: sequential
+                // analysis with the ordering of ICNTL(7) (deterministic,
+                // unlike MUMPS' parallel orderings); ICNTL(13) = 1: no
+                // ScaLAPACK on the root front, so that INFOG(12) counts
+                // every negative pivot; ICNTL(14): 50% more workspace than
+                // the analysis estimates.
+                check(PCFactorSetUpMatSolverType(pc),
+                      "PCFactorSetUpMatSolverType");
+                Mat F = nullptr;
+                check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+                check(MatMumpsSetIcntl(F, 7, mumps_ordering), "MUMPS ICNTL(7)");
+                check(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
+                check(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
+                check(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
+              }
+            // CHOLMOD's supernodal Cholesky stops at the first pivot that
+            // is not positive, as a PETSc error (PETSC_ERR_MAT_CH_ZRPVT),
+            // not as the factor's error type; PETSc must not print it.
+            PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+            const PetscErrorCode setup = KSPSetUp(s.ksp);
+            PetscPopErrorHandler();
+            ++n_numeric;
+            const bool not_definite = setup == PETSC_ERR_MAT_CH_ZRPVT;
+            if (!not_definite)
+              check(setup, "KSPSetUp");
+
+            Mat F = nullptr;
+            check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+            MatFactorError error = MAT_FACTOR_NOERROR;
+            if (!not_definite)
+              check(MatFactorGetError(F, &error), "MatFactorGetError");
+            if (package == Package::mumps && !not_definite)
+              {
+                PetscInt value = 0;
+                check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
+                negative = static_cast<int>(value);
+              }
+            else
+              negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;
+            if (!all(error == MAT_FACTOR_NOERROR && !not_definite))
+              {
+                state.reset();
+                message = name(package) +
+                          (package == Package::cholmod ?
+                             ": the matrix is not positive definite" :
+                             ": the matrix is singular (zero pivot)");
+                return false;
+              }
+            s.factorized = true;
+          }
+
+        Vec pb = nullptr, px = nullptr;
+        check(VecCreateMPIWithArray(
+                comm, 1, n, s.n_global, const_cast<double *>(b[0]), &pb),
+              "VecCreateMPIWithArray");
+        check(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
+              "VecCreateMPIWithArray");
+        const PetscErrorCode code = KSPSolve(s.ksp, pb, px);
+        VecDestroy(&pb);
+        VecDestroy(&px);
+        check(code, "KSPSolve");
+        KSPConvergedReason reason;
+        check(KSPGetConvergedReason(s.ksp, &reason), "KSPGetConvergedReason");
+        if (!all(reason >= 0))
+          {
+            state.reset();
+            message = name(package) + ": the solve failed (PETSc reason " +
+                      std::to_string(static_cast<int>(reason)) + ")";
+            return false;
+          }
+      }
+    catch (const std::exception &e)
+      {
+        state.reset();
+        message = e.what();
+        return false;
+      }
+    return true;
+  }
+} // namespace Signorini
