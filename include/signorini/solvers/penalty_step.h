@@ -64,5 +64,7 @@ namespace Signorini
     double                            initial_mu0 = 0.; // of the first mesh
     double                            last_mu = 0.; // of the last step
     bool                              tolerance_met = true;
+    /// Ipopt stages that failed and were minimised by Newton instead.
+    unsigned int                      newton_stages = 0;
   };
 } // namespace Signorini
