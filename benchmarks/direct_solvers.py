@@ -10,10 +10,11 @@ Every run's quantities must agree with the first variant's (p0 and a to the
 given tolerance), so that a faster solver is not a different answer.
 
     python3 benchmarks/direct_solvers.py --sizes 3:5,3:6 --runs 3 \\
-        --variants Amesos_Mumps@1,PETSc_Mumps@1,PETSc_Cholmod@1,Amesos_Klu@2,PETSc_Mumps@2
+        --variants Amesos_Mumps@1,Amesos_Mumps@1x2,PETSc_Mumps@1,Amesos_Klu@2,PETSc_Mumps@2
 
-A variant is SOLVER@RANKS; SOLVER is a value of `Solver > Linear solver >
-Direct solver`. --method sets `Solver > Method` (default interior-point).
+A variant is SOLVER@RANKS or SOLVER@RANKSxTHREADS (threads per rank,
+default 1, through DEAL_II_NUM_THREADS); SOLVER is a value of `Solver >
+Linear solver > Direct solver`. --method sets `Solver > Method` (default interior-point).
 --markdown FILE puts the table between the DIRECT-SOLVERS markers there.
 """
 import argparse
@@ -29,7 +30,7 @@ import bench_common
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def run(binary, scene, work, glob, local, method, solver, ranks):
+def run(binary, scene, work, glob, local, method, solver, ranks, threads):
     """One run; returns (wall s, summary)."""
     overrides = {"Mesh": {"Global refinements": glob,
                           "Local refinements": local},
@@ -41,7 +42,7 @@ def run(binary, scene, work, glob, local, method, solver, ranks):
     with open(prm, "w") as f:
         f.write(bench_common.variant_text(scene, work, overrides))
     cmd = [binary, prm]
-    env = dict(os.environ, DEAL_II_NUM_THREADS="1")
+    env = dict(os.environ, DEAL_II_NUM_THREADS=str(threads))
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
         env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
@@ -52,7 +53,7 @@ def run(binary, scene, work, glob, local, method, solver, ranks):
     wall = time.perf_counter() - start
     summary = bench_common.read_json(os.path.join(work, "summary.json"))
     if out.returncode not in (0, 4) or not summary:
-        raise RuntimeError(f"{solver}@{ranks} failed ({out.returncode}):\n"
+        raise RuntimeError(f"{solver}@{ranks}x{threads} failed ({out.returncode}):\n"
                            f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
     return wall, summary
 
@@ -71,8 +72,8 @@ def main():
     parser.add_argument("--method", default="interior-point")
     parser.add_argument("--sizes", default="3:5,3:6",
                         help="GLOBAL:LOCAL refinements, comma separated")
-    parser.add_argument("--variants", default="Amesos_Mumps@1,PETSc_Mumps@1,"
-                        "PETSc_Cholmod@1,Amesos_Klu@2,PETSc_Mumps@2")
+    parser.add_argument("--variants", default="Amesos_Mumps@1,Amesos_Mumps@1x2,"
+                        "PETSc_Mumps@1,Amesos_Klu@2,PETSc_Mumps@2")
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--agree", type=float, default=1e-6,
                         help="largest relative difference of a and p0 "
@@ -83,19 +84,20 @@ def main():
     binary = os.path.abspath(args.binary)
     variants = []
     for v in args.variants.split(","):
-        solver, _, ranks = v.partition("@")
-        variants.append((solver, int(ranks or 1)))
+        solver, _, layout = v.partition("@")
+        ranks, _, threads = (layout or "1").partition("x")
+        variants.append((solver, int(ranks), int(threads or 1)))
     sizes = [tuple(int(x) for x in s.split(":")) for s in args.sizes.split(",")]
     info = bench_common.machine_info()
     bench_common.warn_if_busy(info)
     lines = [bench_common.stamp(info, sys.argv, binary), "",
              f"Scene `{os.path.relpath(args.scene, ROOT)}`, `Solver > Method "
-             f"= {args.method}`, one thread per rank (`DEAL_II_NUM_THREADS=1`),"
+             f"= {args.method}`, threads per rank through `DEAL_II_NUM_THREADS`,"
              f" {args.runs} alternated runs per variant, whole process; "
              "`linear solve` and `assembly` are the run's own timers (largest "
              "over the ranks).", "",
-             "| DoFs | solver | ranks | iterations | wall s median (min-max) | "
-             "linear solve s | assembly s | wall / first | agrees |",
+             "| DoFs | solver | ranks x threads | iterations | wall s median "
+             "(min-max) | linear solve s | assembly s | wall / first | agrees |",
              "|---|---|---|---|---|---|---|---|---|"]
     with tempfile.TemporaryDirectory(prefix="direct_") as tmp:
         for glob, local in sizes:
@@ -105,15 +107,15 @@ def main():
             last = {}
             for r in range(args.runs):
                 for v in variants:
-                    work = os.path.join(tmp, f"{v[0]}_{v[1]}_{glob}_{local}")
+                    work = os.path.join(tmp, f"{v[0]}_{v[1]}x{v[2]}_{glob}_{local}")
                     wall, s = run(binary, args.scene, work, glob, local,
-                                  args.method, v[0], v[1])
+                                  args.method, v[0], v[1], v[2])
                     walls[v].append(wall)
                     t = bench_common.timing(s)
                     solves[v].append(t.get("linear solve", float("nan")))
                     assembly[v].append(t.get("assembly", float("nan")))
                     last[v] = s
-                    print(f"{glob}+{local} {v[0]}@{v[1]} run {r}: {wall:.2f} s",
+                    print(f"{glob}+{local} {v[0]}@{v[1]}x{v[2]} run {r}: {wall:.2f} s",
                           file=sys.stderr)
             first = statistics.median(walls[variants[0]])
             ref = last[variants[0]]
@@ -125,7 +127,7 @@ def main():
                     if quantity(ref, k) is not None)
                 med = statistics.median(walls[v])
                 lines.append(
-                    f"| {s['mesh']['dofs']} | {v[0]} | {v[1]} | "
+                    f"| {s['mesh']['dofs']} | {v[0]} | {v[1]} x {v[2]} | "
                     f"{bench_common.iterations(s) or next((val for key, val in s.items() if key.endswith(' iterations')), '')} | "
                     f"{med:.2f} ({min(walls[v]):.2f}-{max(walls[v]):.2f}) | "
                     f"{statistics.median(solves[v]):.2f} | "
