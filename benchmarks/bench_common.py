@@ -223,6 +223,22 @@ def _run_process(cmd, env, timeout, cwd):
         return code, rss, err.read()
 
 
+def run_timed(binary, prm, cwd, ranks=1, env=None):
+    """Run @p binary on @p prm in @p cwd (under mpirun on @p ranks > 1,
+    with OpenMPI allowed to run as root), with @p env added to this
+    process's environment; return (wall seconds, CompletedProcess)."""
+    cmd = [binary, prm]
+    full_env = dict(os.environ, **(env or {}))
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+        full_env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
+                        OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    start = time.perf_counter()
+    out = subprocess.run(cmd, cwd=cwd, env=full_env, capture_output=True,
+                         text=True)
+    return time.perf_counter() - start, out
+
+
 def read_json(path):
     try:
         with open(path) as f:

@@ -20,10 +20,8 @@ Linear solver > Direct solver`. --method sets `Solver > Method` (default interio
 import argparse
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
 import bench_common
 
@@ -41,16 +39,8 @@ def run(binary, scene, work, glob, local, method, solver, ranks, threads):
     prm = os.path.join(work, "run.prm")
     with open(prm, "w") as f:
         f.write(bench_common.variant_text(scene, work, overrides))
-    cmd = [binary, prm]
-    env = dict(os.environ, DEAL_II_NUM_THREADS=str(threads))
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-        env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.perf_counter()
-    out = subprocess.run(cmd, cwd=work, env=env, capture_output=True,
-                         text=True)
-    wall = time.perf_counter() - start
+    wall, out = bench_common.run_timed(
+        binary, prm, work, ranks, {"DEAL_II_NUM_THREADS": str(threads)})
     summary = bench_common.read_json(os.path.join(work, "summary.json"))
     if out.returncode not in (0, 4) or not summary:
         raise RuntimeError(f"{solver}@{ranks}x{threads} failed ({out.returncode}):\n"

@@ -80,16 +80,7 @@ def run_ours(binary, method, glob, local, ranks, fields, work):
     prm = os.path.join(work, "run.prm")
     with open(prm, "w") as f:
         f.write(text)
-    cmd = [binary, prm]
-    env = dict(os.environ)
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-        env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.perf_counter()
-    out = subprocess.run(cmd, cwd=work, env=env, capture_output=True,
-                         text=True)
-    wall = time.perf_counter() - start
+    wall, out = bench_common.run_timed(binary, prm, work, ranks)
     if out.returncode not in (0, 4):
         raise RuntimeError(f"signorini failed ({out.returncode}):\n"
                            f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
@@ -108,7 +99,9 @@ def main():
     parser.add_argument("--peer", default=os.path.join(
         ROOT, "..", "shared", "peers", "freefem"))
     parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--methods", default="ipopt,newton-penalty")
+    parser.add_argument("--methods", default="ipopt,newton-penalty",
+                        help="comma separated; METHOD@RANKS runs that one "
+                        "on RANKS MPI ranks (default --ranks)")
     parser.add_argument("--sizes", default="6:3:5,8:4:6,9:4:7")
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--fields", action="store_true")
@@ -142,7 +135,9 @@ def main():
                 for m in methods:
                     work = os.path.join(tmp, f"{m}_{glob}_{local}")
                     os.makedirs(work, exist_ok=True)
-                    res = run_ours(binary, m, glob, local, args.ranks,
+                    method, _, ranks = m.partition("@")
+                    res = run_ours(binary, method, glob, local,
+                                   int(ranks) if ranks else args.ranks,
                                    args.fields, work)
                     times[m].append(res[0])
                     last[m] = res

@@ -11,8 +11,9 @@
 
 #include <signorini/solvers/linear_solver.h>
 
+#include "shifted_laplacian.h"
+
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,29 +27,10 @@ namespace
 {
   constexpr unsigned int n = 80;
 
-  /// -u'' with a diagonal shift; @p width neighbours on each side.
   void
   make_matrix(MatrixType &A, const unsigned int width, const double shift)
   {
-    DynamicSparsityPattern pattern(n, n);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = (i >= width ? i - width : 0);
-           j <= std::min(n - 1, i + width);
-           ++j)
-        pattern.add(i, j);
-    A.reinit(complete_index_set(n), complete_index_set(n), pattern, MPI_COMM_WORLD);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        A.set(i, i, 2. * width + shift);
-        for (unsigned int k = 1; k <= width; ++k)
-          {
-            if (i >= k)
-              A.set(i, i - k, -1.);
-            if (i + k < n)
-              A.set(i, i + k, -1.);
-          }
-      }
-    A.compress(VectorOperation::insert);
+    shifted_laplacian(A, complete_index_set(n), width, shift);
   }
 
   double

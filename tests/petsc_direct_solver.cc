@@ -17,8 +17,7 @@
 
 #include <signorini/solvers/linear_solver.h>
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include "shifted_laplacian.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,34 +41,7 @@ namespace
     return owned;
   }
 
-  /// -u'' (stencil half-width @p width) plus @p shift on the diagonal.
-  void
-  make_matrix(MatrixType &A, const unsigned int width, const double shift)
-  {
-    const IndexSet         owned = owned_rows();
-    DynamicSparsityPattern pattern(n, n, owned);
-    for (const auto i : owned)
-      for (unsigned int j = (i >= width ? i - width : 0);
-           j <= std::min<unsigned int>(n - 1, i + width);
-           ++j)
-        pattern.add(i, j);
-    A.reinit(owned, owned, pattern, MPI_COMM_WORLD);
-    for (const auto i : owned)
-      {
-        A.set(i, i, 2. * width + shift);
-        for (unsigned int k = 1; k <= width; ++k)
-          {
-            if (i >= k)
-              A.set(i, i - k, -1.);
-            if (i + k < n)
-              A.set(i, i + k, -1.);
-          }
-      }
-    A.compress(VectorOperation::insert);
-  }
-
-  /// Negative eigenvalues of the width-1 matrix: 2 + shift - 2 cos(k pi /
-  /// (n + 1)), k = 1..n.
+  /// Negative eigenvalues of the width-1 matrix with @p shift.
   int
   exact_negative(const double shift)
   {
@@ -87,14 +59,59 @@ namespace
     return d.l2_norm() / b.l2_norm();
   }
 
-  LinearSolver::Parameters
-  direct(const std::string &name)
+  /// One direct solver of LinearSolver by name, its solves of shifted
+  /// Laplacians, and their largest difference from KLU's answers.
+  struct Trial
   {
-    LinearSolver::Parameters parameters;
-    parameters.type          = LinearSolver::Parameters::Type::direct;
-    parameters.direct_solver = name;
-    return parameters;
-  }
+    explicit Trial(const std::string &name, const VectorType &b)
+      : solver(parameters(name))
+      , b(b)
+      , x(b)
+    {}
+
+    static LinearSolver::Parameters
+    parameters(const std::string &name)
+    {
+      LinearSolver::Parameters p;
+      p.type          = LinearSolver::Parameters::Type::direct;
+      p.direct_solver = name;
+      return p;
+    }
+
+    /// Solve with the matrix (@p width, @p shift); compare with KLU.
+    bool
+    solve(const unsigned int width, const double shift)
+    {
+      shifted_laplacian(A, owned_rows(), width, shift);
+      return solve_current();
+    }
+
+    bool
+    solve_current()
+    {
+      LinearSolver::Info info;
+      const bool         solved = solver.solve(A, x, b, info, message);
+      ok                        = ok && solved;
+      if (solved)
+        {
+          LinearSolver klu(parameters("Amesos_Klu"));
+          VectorType   reference(b);
+          std::string  klu_message;
+          AssertThrow(klu.solve(A, reference, b, info, klu_message),
+                      ExcMessage(klu_message));
+          worst = std::max(worst, difference(x, reference));
+        }
+      return solved;
+    }
+
+    LinearSolver      solver;
+    const VectorType &b;
+    VectorType        x;
+    MatrixType        A;
+    std::string       message;
+    double            worst = 0.;
+    bool              ok    = true;
+  };
 } // namespace
 
 int
@@ -116,47 +133,24 @@ main(int argc, char **argv)
     b[i] = std::sin(0.1 * i) + 1.;
   b.compress(VectorOperation::insert);
 
-  // KLU's answer (the matrix gathered to one rank).
-  const auto reference = [&](const MatrixType &A) {
-    LinearSolver       klu(direct("Amesos_Klu"));
-    VectorType         x(b);
-    LinearSolver::Info info;
-    std::string        message;
-    AssertThrow(klu.solve(A, x, b, info, message), ExcMessage(message));
-    return x;
-  };
-
   {
-    LinearSolver       solver(direct("PETSc_Mumps"));
-    LinearSolver::Info info;
-    std::string        message;
-    VectorType         x(b);
-    MatrixType         A;
-    double             worst = 0.;
-    bool               ok    = true;
+    Trial mumps("PETSc_Mumps", b);
+    mumps.solve(1, 0.1); // positive definite
+    const bool definite_inertia = mumps.solver.negative_pivots() == 0;
+    mumps.solve(1, -0.6); // indefinite, same pattern
+    const int negative = mumps.solver.negative_pivots();
+    mumps.solve_current(); // the same values again
+    const unsigned int symbolic = mumps.solver.n_symbolic_factorizations();
+    const unsigned int numeric  = mumps.solver.n_numeric_factorizations();
+    mumps.solve(2, 0.1); // a new pattern
 
-    make_matrix(A, 1, 0.1); // positive definite
-    ok    = ok && solver.solve(A, x, b, info, message);
-    worst = std::max(worst, difference(x, reference(A)));
-    const bool definite_inertia = solver.negative_pivots() == 0;
-    make_matrix(A, 1, -0.6); // indefinite, same pattern
-    ok    = ok && solver.solve(A, x, b, info, message);
-    worst = std::max(worst, difference(x, reference(A)));
-    const int negative = solver.negative_pivots();
-    ok    = ok && solver.solve(A, x, b, info, message); // the same values
-    const unsigned int symbolic = solver.n_symbolic_factorizations();
-    const unsigned int numeric  = solver.n_numeric_factorizations();
-    make_matrix(A, 2, 0.1); // a new pattern
-    ok    = ok && solver.solve(A, x, b, info, message);
-    worst = std::max(worst, difference(x, reference(A)));
-
-    say("PETSc_Mumps: every solve succeeded", ok);
-    say("PETSc_Mumps: solutions equal Amesos_Klu's to 1e-12", worst < 1e-12);
+    say("PETSc_Mumps: every solve succeeded", mumps.ok);
+    say("PETSc_Mumps: solutions equal Amesos_Klu's to 1e-12", mumps.worst < 1e-12);
     say("PETSc_Mumps: one analysis, two factorisations for three solves of "
         "one pattern",
         symbolic == 1 && numeric == 2);
     say("PETSc_Mumps: analysed again for a new pattern",
-        solver.n_symbolic_factorizations() == 2);
+        mumps.solver.n_symbolic_factorizations() == 2);
     say("PETSc_Mumps: no negative pivot on the definite matrix",
         definite_inertia);
     say("PETSc_Mumps: negative pivots of the indefinite matrix equal its "
@@ -164,95 +158,66 @@ main(int argc, char **argv)
           std::to_string(exact_negative(-0.6)) + ")",
         negative == exact_negative(-0.6));
     if (root)
-      std::cerr << "PETSc_Mumps: " << (ok ? "" : message + "; ")
-                << "largest difference " << worst
-                << ", negative pivots " << negative << " (exact "
-                << exact_negative(-0.6) << ")\n";
+      std::cerr << "PETSc_Mumps: " << (mumps.ok ? "" : mumps.message + "; ")
+                << "largest difference " << mumps.worst << ", negative pivots "
+                << negative << " (exact " << exact_negative(-0.6) << ")\n";
 
     // Singular: unknown 40 decoupled from the others with a zero diagonal
     // (its row and column zero), an exact zero pivot whatever the ordering.
-    MatrixType S;
-    make_matrix(S, 1, 0.1);
+    shifted_laplacian(mumps.A, owned_rows(), 1, 0.1);
     for (const auto i : owned_rows())
       if (i == 39 || i == 41)
-        S.set(i, 40, 0.);
+        mumps.A.set(i, 40, 0.);
       else if (i == 40)
-        {
-          S.set(i, 39, 0.);
-          S.set(i, 40, 0.);
-          S.set(i, 41, 0.);
-        }
-    S.compress(VectorOperation::insert);
-    std::string singular_message;
-    const bool  singular_failed = !solver.solve(S, x, b, info, singular_message);
+        for (const unsigned int j : {39, 40, 41})
+          mumps.A.set(i, j, 0.);
+    mumps.A.compress(VectorOperation::insert);
+    const bool singular_failed = !mumps.solve_current();
     say("PETSc_Mumps: a singular matrix fails with a reason",
-        singular_failed && singular_message.find("singular") != std::string::npos);
+        singular_failed &&
+          mumps.message.find("singular") != std::string::npos);
     if (root)
-      std::cerr << "PETSc_Mumps singular: " << singular_message << "\n";
-    make_matrix(A, 1, 0.1);
-    const bool again = solver.solve(A, x, b, info, message);
+      std::cerr << "PETSc_Mumps singular: " << mumps.message << "\n";
+    mumps.ok = true;
     say("PETSc_Mumps: and solves again afterwards",
-        again && difference(x, reference(A)) < 1e-12);
+        mumps.solve(1, 0.1) && mumps.worst < 1e-12);
   }
 
   {
     // Amesos_Mumps on the same matrices: on 2 ranks it failed as
     // "singular" while the sequential MUMPS that Ipopt links stood in for
     // the parallel one (CMakeLists.txt).
-    LinearSolver       solver(direct("Amesos_Mumps"));
-    LinearSolver::Info info;
-    std::string        message;
-    VectorType         x(b);
-    MatrixType         A;
-    double             worst = 0.;
-    bool               ok    = true;
+    Trial amesos("Amesos_Mumps", b);
     for (const double shift : {0.1, -0.6})
-      {
-        make_matrix(A, 1, shift);
-        ok    = ok && solver.solve(A, x, b, info, message);
-        worst = std::max(worst, difference(x, reference(A)));
-      }
+      amesos.solve(1, shift);
     say("Amesos_Mumps: definite and indefinite solves equal Amesos_Klu's to "
         "1e-12",
-        ok && worst < 1e-12);
+        amesos.ok && amesos.worst < 1e-12);
     if (root)
-      std::cerr << "Amesos_Mumps: " << message << " largest difference "
-                << worst << "\n";
+      std::cerr << "Amesos_Mumps: " << amesos.message << " largest difference "
+                << amesos.worst << "\n";
   }
 
   if (one_rank)
     {
-      LinearSolver       solver(direct("PETSc_Cholmod"));
-      LinearSolver::Info info;
-      std::string        message;
-      VectorType         x(b);
-      MatrixType         A;
-      make_matrix(A, 1, 0.1);
-      bool         ok    = solver.solve(A, x, b, info, message);
-      double       worst = difference(x, reference(A));
-      make_matrix(A, 1, 0.5);
-      ok    = ok && solver.solve(A, x, b, info, message);
-      worst = std::max(worst, difference(x, reference(A)));
-      const unsigned int symbolic = solver.n_symbolic_factorizations();
-      make_matrix(A, 1, -0.6);
-      std::string indefinite;
-      const bool  refused = !solver.solve(A, x, b, info, indefinite);
-      make_matrix(A, 1, 0.1);
-      ok = ok && solver.solve(A, x, b, info, message);
-      out << "PETSc_Cholmod: every definite solve succeeded: "
-          << (ok ? "yes" : "NO") << "\n"
-          << "PETSc_Cholmod: solutions equal Amesos_Klu's to 1e-12: "
-          << (worst < 1e-12 ? "yes" : "NO") << "\n"
-          << "PETSc_Cholmod: one analysis for two matrices of one pattern: "
-          << (symbolic == 1 ? "yes" : "NO") << "\n"
-          << "PETSc_Cholmod: the indefinite matrix is refused as not positive "
-             "definite: "
-          << (refused &&
-                  indefinite.find("not positive definite") != std::string::npos ?
-                "yes" :
-                "NO")
-          << "\n";
-      std::cerr << "PETSc_Cholmod: largest difference " << worst << "; "
-                << indefinite << "\n";
+      Trial cholmod("PETSc_Cholmod", b);
+      cholmod.solve(1, 0.1);
+      cholmod.solve(1, 0.5);
+      const unsigned int symbolic = cholmod.solver.n_symbolic_factorizations();
+      const bool         definite = cholmod.ok;
+      const bool         refused  = !cholmod.solve(1, -0.6);
+      const std::string  reason   = cholmod.message;
+      cholmod.ok                  = true;
+      cholmod.solve(1, 0.1);
+      say("PETSc_Cholmod: every definite solve succeeded", definite && cholmod.ok);
+      say("PETSc_Cholmod: solutions equal Amesos_Klu's to 1e-12",
+          cholmod.worst < 1e-12);
+      say("PETSc_Cholmod: one analysis for two matrices of one pattern",
+          symbolic == 1);
+      say("PETSc_Cholmod: the indefinite matrix is refused as not positive "
+          "definite",
+          refused && reason.find("not positive definite") != std::string::npos);
+      std::cerr << "PETSc_Cholmod: largest difference " << cholmod.worst << "; "
+                << reason << "\n";
     }
 }
