@@ -358,6 +358,12 @@ main()
   run_case("ipopt_on_two_ranks",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = ipopt\nend"}}),
            out, true, "mpirun --allow-run-as-root --oversubscribe -np 2 ");
+  // CHOLMOD factorises on one rank.
+  run_case("cholmod_on_two_ranks",
+           scene({{"@EXTRA@", "subsection Solver\n  subsection Linear solver\n"
+                              "    set Direct solver = PETSc_Cholmod\n"
+                              "  end\nend"}}),
+           out, true, "mpirun --allow-run-as-root --oversubscribe -np 2 ");
   // The interior point method handles the rigid foundation only.
   run_case("interior_point_without_contact",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\nend"}}),
