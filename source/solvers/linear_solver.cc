@@ -49,7 +49,9 @@ namespace Signorini
       "eigenvalues of the matrix. PETSc_Cholmod: CHOLMOD's supernodal "
       "Cholesky (SuiteSparse, METIS or AMD ordering), one MPI rank only; "
       "it fails on a matrix that is not positive definite, which the "
-      "Newton and interior point iterations answer with a diagonal shift. "
+      "Newton and interior point iterations answer with a diagonal shift "
+      "(the interior point method failed the peer's rigid Hertz scene with "
+      "it: doc/performance.md). "
       "auto: PETSc_Mumps, the fastest measured on 1 and 2 ranks from 1e4 "
       "to 5e5 DoFs (doc/performance.md, 'Linear solvers').");
     prm.declare_entry("MUMPS ordering",
@@ -212,7 +214,6 @@ namespace Signorini
     direct.pattern_hash = 0;
     direct.factorized   = false;
   }
-
 
   bool
   LinearSolver::solve_petsc(const MatrixType &H,
