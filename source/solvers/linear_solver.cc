@@ -197,12 +197,6 @@ namespace Signorini
            (direct.petsc ? direct.petsc->n_numeric_factorizations() : 0);
   }
 
-  int
-  LinearSolver::negative_pivots() const
-  {
-    return direct.petsc ? direct.petsc->negative_pivots() : -1;
-  }
-
   void
   LinearSolver::forget_analysis() const
   {
@@ -227,11 +221,13 @@ namespace Signorini
           PETScDirectSolver::Package::cholmod :
           PETScDirectSolver::Package::mumps,
         parameters.mumps_ordering);
-    return direct.petsc->solve(
+    const bool solved = direct.petsc->solve(
       H.trilinos_matrix(),
       x.trilinos_vector(),
       static_cast<const Epetra_MultiVector &>(b.trilinos_vector()),
       message);
+    last_negative_pivots = direct.petsc->negative_pivots();
+    return solved;
   }
 
   bool
@@ -421,8 +417,9 @@ namespace Signorini
                       Info             &info,
                       std::string      &message) const
   {
-    info = Info();
-    x    = 0.;
+    info                 = Info();
+    x                    = 0.;
+    last_negative_pivots = -1;
     if (parameters.type == Parameters::Type::direct)
       return solve_direct(H, x, b, message);
 

@@ -123,13 +123,17 @@ namespace Signorini
     n_numeric_factorizations() const;
 
     /**
-     * The number of negative eigenvalues of the matrix the direct solver
-     * factorised last, where the factorisation tells it (PETSc_Mumps:
-     * MUMPS' negative pivots; PETSc_Cholmod: 1 if it failed as not
-     * positive definite, else 0); -1 otherwise.
+     * The number of negative eigenvalues of the matrix of the last solve(),
+     * where its factorisation tells it (PETSc_Mumps: MUMPS' negative
+     * pivots; PETSc_Cholmod: 1 if it failed as not positive definite, else
+     * 0); -1 otherwise (another solver, an iterative solve, or a failure
+     * before the factorisation).
      */
     int
-    negative_pivots() const;
+    negative_pivots() const
+    {
+      return last_negative_pivots;
+    }
 
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
@@ -198,5 +202,7 @@ namespace Signorini
     Parameters          parameters;
     NearNullSpace       null_space;
     mutable DirectState direct;
+    /// negative_pivots() of the last solve.
+    mutable int         last_negative_pivots = -1;
   };
 } // namespace Signorini
