@@ -279,12 +279,16 @@ def peak_memory_mb(summary):
 
 
 def iterations(summary):
+    """The run's iteration count: Newton's or Ipopt's, else that of
+    whichever solver wrote a top-level "... iterations" entry (the interior
+    point method)."""
     if not summary:
         return None
     for key in ("newton iterations", "ipopt iterations"):
         if key in summary:
             return summary[key]
-    return None
+    return next((v for k, v in summary.items() if k.endswith(" iterations")),
+                None)
 
 
 def step_iterations(summary):

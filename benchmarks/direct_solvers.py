@@ -118,7 +118,7 @@ def main():
                 med = statistics.median(walls[v])
                 lines.append(
                     f"| {s['mesh']['dofs']} | {v[0]} | {v[1]} x {v[2]} | "
-                    f"{bench_common.iterations(s) or next((val for key, val in s.items() if key.endswith(' iterations')), '')} | "
+                    f"{bench_common.iterations(s)} | "
                     f"{med:.2f} ({min(walls[v]):.2f}-{max(walls[v]):.2f}) | "
                     f"{statistics.median(solves[v]):.2f} | "
                     f"{statistics.median(assembly[v]):.2f} | "

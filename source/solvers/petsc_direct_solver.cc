@@ -9,7 +9,6 @@
 #include <petscksp.h>
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -59,12 +58,10 @@ namespace Signorini
   /// The PETSc objects of one sparsity pattern.
   struct PETScDirectSolver::State
   {
-    MPI_Comm            comm = MPI_COMM_NULL;
-    Mat                 matrix = nullptr;
-    KSP                 ksp    = nullptr;
-    std::size_t         hash   = 0;
-    PetscInt            first  = 0;
-    PetscInt            n_local = 0;
+    Mat                 matrix   = nullptr;
+    KSP                 ksp      = nullptr;
+    std::size_t         hash     = 0;
+    PetscInt            first    = 0;
     PetscInt            n_global = 0;
     /// The values of the matrix last copied in, in Epetra's order, and
     /// whether PETSc holds their factorisation.
@@ -177,10 +174,8 @@ namespace Signorini
               }
 
             state           = std::make_unique<State>();
-            state->comm     = comm;
             state->hash     = hash;
             state->first    = n_before;
-            state->n_local  = n;
             state->n_global = A.NumGlobalRows64();
 
             std::vector<PetscInt> diagonal(n, 0), off_diagonal(n, 0);
@@ -232,52 +227,46 @@ namespace Signorini
                                              MATSOLVERMUMPS :
                                              MATSOLVERCHOLMOD),
                   "PCFactorSetMatSolverType");
-            state->values.clear();
             ++n_symbolic;
           }
 
         // Copy the values in (row by row, global indices) unless they are
         // the ones factorised last: then only solve again.
-        State &s = *state;
-        std::vector<double> values;
-        values.reserve(s.values.size());
-        for (int r = 0; r < n; ++r)
+        State &s    = *state;
+        bool   same = s.factorized;
+        for (int r = 0, offset = 0; r < n && same; ++r)
           {
             int     m = 0;
             double *v = nullptr;
             A.ExtractMyRowView(r, m, v);
-            values.insert(values.end(), v, v + m);
+            same = std::equal(v, v + m, s.values.begin() + offset);
+            offset += m;
           }
-        const bool same_values = all(s.factorized && values == s.values);
-        if (!same_values)
+        if (!all(same))
           {
             s.factorized = false;
+            s.values.clear();
             std::vector<PetscInt> indices;
-            std::size_t           offset = 0;
             for (int r = 0; r < n; ++r)
               {
-                int  m     = 0;
-                int *local = nullptr;
+                int     m     = 0;
+                int    *local = nullptr;
+                double *v     = nullptr;
                 A.Graph().ExtractMyRowView(r, m, local);
+                A.ExtractMyRowView(r, m, v);
                 indices.resize(m);
                 for (int k = 0; k < m; ++k)
                   indices[k] = static_cast<PetscInt>(cols.GID64(local[k]));
                 const PetscInt row = s.first + r;
-                check(MatSetValues(s.matrix,
-                                   1,
-                                   &row,
-                                   m,
-                                   indices.data(),
-                                   values.data() + offset,
-                                   INSERT_VALUES),
+                check(MatSetValues(
+                        s.matrix, 1, &row, m, indices.data(), v, INSERT_VALUES),
                       "MatSetValues");
-                offset += m;
+                s.values.insert(s.values.end(), v, v + m);
               }
             check(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY),
                   "MatAssemblyBegin");
             check(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY),
                   "MatAssemblyEnd");
-            s.values = std::move(values);
             check(KSPSetOperators(s.ksp, s.matrix, s.matrix),
                   "KSPSetOperators");
             PC pc = nullptr;
@@ -327,10 +316,16 @@ namespace Signorini
             if (!all(error == MAT_FACTOR_NOERROR && !not_definite))
               {
                 state.reset();
-                message = name(package) +
-                          (package == Package::cholmod ?
-                             ": the matrix is not positive definite" :
-                             ": the matrix is singular (zero pivot)");
+                message =
+                  name(package) +
+                  (not_definite ? ": the matrix is not positive definite" :
+                   error == MAT_FACTOR_NUMERIC_ZEROPIVOT ?
+                                  ": the matrix is singular (zero pivot)" :
+                   error == MAT_FACTOR_OUTMEMORY ?
+                                  ": out of memory in the factorisation" :
+                   error == MAT_FACTOR_NOERROR ?
+                                  ": the factorisation failed on another rank" :
+                                  ": the factorisation failed");
                 return false;
               }
             s.factorized = true;
