@@ -6,10 +6,19 @@
 // (2) sampling: Phi = sum of face terms is > 0 in a layer just inside the
 //     surface, including under the shared vertices, and 0 on the surface
 //     and outside.
+// Both for the poster's simplices and for the 'partition' shape; for the
+// latter also (3) the points near a face's ends, where the weights ramp,
+// and (4) how much Phi varies along a flat surface at a fixed depth, with
+// equal faces (where it must be constant, free ends included) and uneven
+// ones.
 
 #include <signorini/contact/indicator.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <fstream>
+#include <iomanip>
+#include <map>
 #include <random>
 
 using namespace dealii;
@@ -17,13 +26,17 @@ using namespace Signorini;
 
 constexpr double stretch = 0.12;
 
+using Shape = Contact::IndicatorFace<2>::Shape;
+
 template <int dim>
 Contact::IndicatorFace<dim>
-unit_face(std::mt19937 &rng, const double jitter, const double depth, const double shear)
+unit_face(std::mt19937 &rng, const double jitter, const double depth, const double shear,
+          const Shape shape)
 {
   // Face on x_d = 0, cell below it down to x_d = -depth.
   std::uniform_real_distribution<double> u(-1., 1.);
   Contact::IndicatorFace<dim>            f;
+  f.shape = static_cast<typename Contact::IndicatorFace<dim>::Shape>(shape);
   const std::array<std::array<double, 2>, 4> corners = {
     {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}}};
   for (unsigned int v = 0; v < f.n_face_vertices; ++v)
@@ -49,7 +62,8 @@ unit_face(std::mt19937 &rng, const double jitter, const double depth, const doub
 template <int dim>
 void
 check_derivatives(const std::string &name, const double jitter, const double depth,
-                  const double shear, std::ostream &out)
+                  const double shear, std::ostream &out,
+                  const Shape shape = Shape::simplex, const bool near_ends = false)
 {
   std::mt19937                           rng(42 + dim);
   std::uniform_real_distribution<double> u(0., 1.);
@@ -57,7 +71,7 @@ check_derivatives(const std::string &name, const double jitter, const double dep
   unsigned int positive = 0;
   for (unsigned int trial = 0; trial < 20; ++trial)
     {
-      const auto f = unit_face<dim>(rng, jitter, depth, shear);
+      auto f = unit_face<dim>(rng, jitter, depth, shear, shape);
       // A point inside the cell near the face, where the terms are > 0.
       Point<dim>          x;
       std::vector<double> weights(f.n_face_vertices);
@@ -66,6 +80,16 @@ check_derivatives(const std::string &name, const double jitter, const double dep
         sum += (wt = 0.2 + u(rng));
       for (unsigned int v = 0; v < f.n_face_vertices; ++v)
         x += weights[v] / sum * f.face[v];
+      if (near_ends)
+        {
+          // Within 0.1 of vertex 0's end(s), on either side, and every
+          // other trial with free ends.
+          x = f.face[0];
+          for (unsigned int d = 0; d + 1 < dim; ++d)
+            x[d] += 0.2 * (u(rng) - 0.5);
+          if (trial % 2 == 1)
+            f.free_end.fill(true), f.end_stretch.fill(0.3);
+        }
       x[dim - 1] -= 0.1 * depth * (0.2 + u(rng));
 
       Vector<double>     g;
@@ -128,17 +152,21 @@ check_derivatives(const std::string &name, const double jitter, const double dep
 // above it.
 template <int dim>
 void
-check_sampling(const double stretch, std::ostream &out)
+check_sampling(const double stretch, std::ostream &out, const Shape shape = Shape::simplex,
+               const bool equal = false)
 {
-  const std::vector<double> xs = {0., 0.7, 1.5, 2.6, 4.};
+  const std::vector<double> xs = (equal ? std::vector<double>{0., 1., 2., 3., 4.} :
+                                          std::vector<double>{0., 0.7, 1.5, 2.6, 4.});
   const std::vector<double> ys = (dim == 2 ? std::vector<double>{0., 1.} :
-                                             std::vector<double>{0., 0.9, 2.});
+                                   equal    ? std::vector<double>{0., 1., 2.} :
+                                              std::vector<double>{0., 0.9, 2.});
   const double depth = 1.;
   std::vector<Contact::IndicatorFace<dim>> faces;
   for (unsigned int i = 0; i + 1 < xs.size(); ++i)
     for (unsigned int j = 0; j + 1 < ys.size(); ++j)
       {
         Contact::IndicatorFace<dim> f;
+        f.shape = static_cast<typename Contact::IndicatorFace<dim>::Shape>(shape);
         if (dim == 2)
           {
             f.face[0][0] = xs[i];
@@ -158,6 +186,22 @@ check_sampling(const double stretch, std::ostream &out)
           {
             f.opposite[v]          = f.face[v];
             f.opposite[v][dim - 1] = -depth;
+          }
+        if (shape == Shape::partition)
+          {
+            // The strip's outer ends are free ends (as setup() finds them).
+            const bool first_x = (i == 0), last_x = (i + 2 == xs.size());
+            const bool first_y = (j == 0), last_y = (j + 2 == ys.size());
+            const std::array<bool, 4> free =
+              (dim == 2 ? std::array<bool, 4>{{first_x, last_x, false, false}} :
+                          std::array<bool, 4>{{first_y, last_x, last_y, first_x}});
+            for (unsigned int v = 0; v < f.n_face_vertices; ++v)
+              if (free[v])
+                {
+                  f.free_end[v]                                = true;
+                  f.end_stretch[v]                             = 0.5;
+                  f.end_stretch[(v + 1) % f.n_face_vertices] = 0.5;
+                }
           }
         faces.push_back(f);
         if (dim == 2)
@@ -188,6 +232,18 @@ check_sampling(const double stretch, std::ostream &out)
         sy.push_back(0.05 * k);
       sy.push_back(0.9);
     }
+  if (shape == Shape::partition) // the free ends themselves
+    {
+      sx.push_back(xs.front());
+      sx.push_back(xs.back());
+      if (dim == 3)
+        {
+          sy.push_back(ys.front());
+          sy.push_back(ys.back());
+        }
+    }
+  // Largest relative variation of Phi along the surface at each depth.
+  std::map<double, std::pair<double, double>> range;
   unsigned int inside = 0, inside_positive = 0, outside = 0, outside_zero = 0,
                box_misses = 0;
   double       on_surface = 0.;
@@ -204,6 +260,11 @@ check_sampling(const double stretch, std::ostream &out)
           box_misses += (std::abs(v - Phi_all(p)) > 0.);
           if (e > 0.)
             {
+              auto it = range.find(e);
+              if (it == range.end())
+                range[e] = {v, v};
+              else
+                it->second = {std::min(it->second.first, v), std::max(it->second.second, v)};
               ++inside;
               inside_positive += (v > 0.);
             }
@@ -221,6 +282,18 @@ check_sampling(const double stretch, std::ostream &out)
       << " points above the surface, max Phi on the surface < 1e-30: "
       << (on_surface < 1e-30 ? "yes" : "NO") << "; bounding boxes miss "
       << box_misses << " nonzero contributions\n";
+  if (shape == Shape::partition)
+    {
+      double variation = 0.;
+      for (const auto &r : range)
+        variation = std::max(variation, (r.second.second - r.second.first) / r.second.second);
+      out << "  partition, " << (equal ? "equal" : "uneven")
+          << " faces: largest variation of Phi along the surface at a fixed depth ";
+      if (equal)
+        out << "< 1e-12: " << (variation < 1e-12 ? "yes" : "NO") << "\n";
+      else
+        out << std::setprecision(2) << 100. * variation << "%\n";
+    }
 }
 
 int
@@ -239,4 +312,19 @@ main()
   // 3D, under the diagonals): the sampling test sees it.
   check_sampling<2>(0., out);
   check_sampling<3>(0., out);
+
+  const auto P = Shape::partition;
+  check_derivatives<2>("partition, random cells", 0.1, 1., 0., out, P);
+  check_derivatives<2>("partition, flat cells (depth 1e-3)", 0., 1e-3, 0., out, P);
+  check_derivatives<2>("partition, sheared cells", 0.05, 0.3, 0.8, out, P);
+  check_derivatives<2>("partition, near the ends", 0.1, 1., 0., out, P, true);
+  check_derivatives<3>("partition, random cells", 0.1, 1., 0., out, P);
+  check_derivatives<3>("partition, flat cells (depth 1e-3)", 0., 1e-3, 0., out, P);
+  check_derivatives<3>("partition, sheared cells", 0.05, 0.3, 0.8, out, P);
+  check_derivatives<3>("partition, near the ends", 0.1, 1., 0., out, P, true);
+  for (const bool equal : {true, false})
+    {
+      check_sampling<2>(stretch, out, P, equal);
+      check_sampling<3>(stretch, out, P, equal);
+    }
 }

@@ -157,6 +157,153 @@ namespace Signorini
         return total;
       }
 
+      /// C^2 ramp: 0 for u <= 0, 1 for u >= 1, u^3 (10 - 15 u + 6 u^2)
+      /// between (value, first and second derivatives match at both ends;
+      /// ramp(u) + ramp(1 - u) = 1).
+      template <typename Number>
+      Number
+      ramp(const Number &u)
+      {
+        if (u <= 0.)
+          return Number(0.);
+        if (u >= 1.)
+          return Number(1.);
+        return u * u * u * (10. + u * (-15. + 6. * u));
+      }
+
+      /**
+       * The weight of one face end at the coordinate t along the face
+       * (t = 0 at the end, t > 0 into the face): at a shared end it rises
+       * over [-s, s] (the neighbour's weight falls over the same points,
+       * and the two sum to 1); at a free end over [-s_end, 0].
+       */
+      template <typename Number>
+      Number
+      end_weight(const Number &t, const bool free_end, const double s)
+      {
+        return free_end ? ramp<Number>((t + s) / s) : ramp<Number>((t + s) / (2. * s));
+      }
+
+      /**
+       * The 'partition' face term (indicator.h): g(d / H) W(t) over the
+       * prism normal to the face.
+       */
+      template <int dim, typename Number>
+      Number
+      partition_term(const std::array<std::array<Number, dim>, IndicatorFace<dim>::n_points> &p,
+                     const double                                                  stretch,
+                     const std::array<double, IndicatorFace<dim>::n_face_vertices> &end_stretch,
+                     const std::array<bool, IndicatorFace<dim>::n_face_vertices>   &free_end,
+                     const double apex_depth,
+                     double      *depth = nullptr)
+      {
+        constexpr unsigned int nf = IndicatorFace<dim>::n_face_vertices;
+        if (depth)
+          *depth = -1.;
+        std::array<Number, dim> G, apex;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            Number face_mean = 0., opposite_mean = 0.;
+            for (unsigned int v = 0; v < nf; ++v)
+              {
+                face_mean += p[1 + v][d];
+                opposite_mean += p[1 + nf + v][d];
+              }
+            G[d]    = face_mean / double(nf);
+            apex[d] = G[d] + apex_depth * (opposite_mean - face_mean) / double(nf);
+          }
+        // In-plane axes (2D: B -> C; 3D: the quad's midlines, a1 from edge
+        // 3-0 to edge 1-2, a2 from edge 0-1 to edge 2-3) and the unit
+        // normal towards the apex.
+        std::array<std::array<Number, dim>, dim - 1> a;
+        std::array<Number, dim>                      n;
+        if constexpr (dim == 2)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              a[0][d] = p[2][d] - p[1][d];
+            n[0] = -a[0][1];
+            n[1] = a[0][0];
+          }
+        else
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                a[0][d] = 0.5 * (p[2][d] + p[3][d] - p[1][d] - p[4][d]);
+                a[1][d] = 0.5 * (p[3][d] + p[4][d] - p[1][d] - p[2][d]);
+              }
+            n[0] = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+            n[1] = a[0][2] * a[1][0] - a[0][0] * a[1][2];
+            n[2] = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+          }
+        Number n2 = 0., height = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n2 += n[d] * n[d];
+            height += n[d] * (apex[d] - G[d]);
+          }
+        const Number n_norm = std::sqrt(n2);
+        Number       dist   = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          dist += n[d] * (p[0][d] - G[d]);
+        // Oriented so that the apex lies at positive height.
+        const double sign = (height > 0. ? 1. : -1.);
+        dist *= sign / n_norm;
+        height *= sign / n_norm;
+        const Number eta = dist / height;
+        if (eta <= 0. || eta >= 1.)
+          return Number(0.);
+
+        // Coordinates along the face, t in [0, 1] over it.
+        std::array<Number, dim - 1> t;
+        if constexpr (dim == 2)
+          {
+            Number num = 0., den = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                num += (p[0][d] - p[1][d]) * a[0][d];
+                den += a[0][d] * a[0][d];
+              }
+            t[0] = num / den;
+          }
+        else
+          {
+            Number g00 = 0., g01 = 0., g11 = 0., r0 = 0., r1 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                g00 += a[0][d] * a[0][d];
+                g01 += a[0][d] * a[1][d];
+                g11 += a[1][d] * a[1][d];
+                r0 += a[0][d] * (p[0][d] - G[d]);
+                r1 += a[1][d] * (p[0][d] - G[d]);
+              }
+            const Number det = g00 * g11 - g01 * g01;
+            t[0]             = 0.5 + (g11 * r0 - g01 * r1) / det;
+            t[1]             = 0.5 + (g00 * r1 - g01 * r0) / det;
+          }
+        // The ends of each coordinate: 2D t = 0 at vertex 0, t = 1 at
+        // vertex 1; 3D t1 = 0 at edge 3, t1 = 1 at edge 1, t2 = 0 at edge
+        // 0, t2 = 1 at edge 2 (edge v from vertex v to v + 1).
+        const unsigned int lower[2] = {dim == 2 ? 0u : 3u, 0u};
+        const unsigned int upper[2] = {1u, 2u};
+        Number             weight   = 1.;
+        for (unsigned int k = 0; k + 1 < dim; ++k)
+          {
+            const unsigned int lo = lower[k], hi = upper[k];
+            // A free end's width is the end stretch (3D: set at the
+            // edge's first vertex), a shared end's the common stretch.
+            weight *= end_weight<Number>(t[k], free_end[lo],
+                                         free_end[lo] ? end_stretch[lo] : stretch);
+            weight *= end_weight<Number>(1. - t[k], free_end[hi],
+                                         free_end[hi] ? end_stretch[hi] : stretch);
+          }
+        const Number one_minus = 1. - eta;
+        const Number term      = 64. * eta * eta * eta * one_minus * one_minus * one_minus * weight;
+        if constexpr (std::is_same_v<Number, double>)
+          if (depth && term > 0.)
+            *depth = dist;
+        return term;
+      }
+
       template <int dim, typename Number>
       std::array<std::array<Number, dim>, IndicatorFace<dim>::n_points>
       gather(const IndicatorFace<dim> &f, const Point<dim> &x)
@@ -192,6 +339,9 @@ namespace Signorini
                               const double      stretch,
                               const double      apex_depth) const
     {
+      if (shape == Shape::partition)
+        return partition_term<dim, double>(gather<dim, double>(*this, x),
+                                           stretch, stretches(stretch), free_end, apex_depth);
       return face_term<dim, double>(gather<dim, double>(*this, x),
                                     stretches(stretch),
                                     apex_depth);
@@ -204,8 +354,12 @@ namespace Signorini
                               const double      apex_depth) const
     {
       double d = -1.;
-      face_term<dim, double>(gather<dim, double>(*this, x), stretches(stretch),
-                             apex_depth, &d);
+      if (shape == Shape::partition)
+        partition_term<dim, double>(gather<dim, double>(*this, x), stretch,
+                                    stretches(stretch), free_end, apex_depth, &d);
+      else
+        face_term<dim, double>(gather<dim, double>(*this, x), stretches(stretch),
+                               apex_depth, &d);
       return d;
     }
 
@@ -228,7 +382,10 @@ namespace Signorini
             Inner              inner(n_variables, i, values[k][d]);
             p[k][d] = Outer(n_variables, i, inner);
           }
-      const Outer result = face_term<dim, Outer>(p, stretches(stretch), apex_depth);
+      const Outer result =
+        shape == Shape::partition ?
+          partition_term<dim, Outer>(p, stretch, stretches(stretch), free_end, apex_depth) :
+          face_term<dim, Outer>(p, stretches(stretch), apex_depth);
       gradient.reinit(n_variables);
       hessian.reinit(n_variables, n_variables);
       if (result.size() == 0) // a constant zero: no variable entered
@@ -321,14 +478,38 @@ namespace Signorini
             lower[d] = std::min(lower[d], q[d]);
             upper[d] = std::max(upper[d], q[d]);
           }
+      if (shape == Shape::partition)
+        {
+          // The prism's far side: the face moved by the apex's height
+          // along the face's normal.
+          Point<dim> G;
+          for (const auto &q : face)
+            G += q / double(n_face_vertices);
+          Tensor<1, dim> n;
+          if constexpr (dim == 2)
+            n = Tensor<1, dim>({face[0][1] - face[1][1], face[1][0] - face[0][0]});
+          else
+            n = cross_product_3d(0.5 * (face[1] + face[2] - face[0] - face[3]),
+                                 0.5 * (face[2] + face[3] - face[0] - face[1]));
+          n /= n.norm();
+          const Tensor<1, dim> up = (n * (apex - G)) * n;
+          for (const auto &q : face)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], q[d] + up[d]);
+                upper[d] = std::max(upper[d], q[d] + up[d]);
+              }
+        }
       for (unsigned int d = 0; d < dim; ++d)
         {
           double largest = 0.;
           for (const double s : stretches(stretch))
             largest = std::max(largest, s);
           const double grow = 2. * largest * (face_upper[d] - face_lower[d]);
-          lower[d] = std::min(lower[d], face_lower[d] - grow);
-          upper[d] = std::max(upper[d], face_upper[d] + grow);
+          // (the partition shape's prism is grown as a whole)
+          const double whole = (shape == Shape::partition ? grow : 0.);
+          lower[d] = std::min(lower[d] - whole, face_lower[d] - grow);
+          upper[d] = std::max(upper[d] + whole, face_upper[d] + grow);
         }
       return BoundingBox<dim>(std::make_pair(lower, upper));
     }

@@ -98,6 +98,22 @@ namespace Signorini
                         "overlaps: with the common stretch, Phi under such a "
                         "vertex is about 25 times weaker than mid-face and "
                         "vanishes below 0.2 of the cell depth [-].");
+      prm.declare_entry("Indicator shape",
+                        "simplex",
+                        Patterns::Selection("simplex|partition"),
+                        "simplex: the poster's construction, a sum over body "
+                        "2's faces of C^2 bumps on stretched simplices; along "
+                        "a face it is about 12 times weaker under shared "
+                        "vertices than mid-face at the same depth, which "
+                        "fails the contact patch test. partition: over each "
+                        "face a prism normal to it, g(depth / H) times a "
+                        "weight that rises over [-s, s] (s = 'Stretch') at "
+                        "each face end shared with a neighbour, so that the "
+                        "weights sum to 1, and over [-s_end, 0] at a free "
+                        "end ('End stretch'); g(eta) = 64 eta^3 (1 - eta)^3, "
+                        "H the apex's height. On a flat surface of equal "
+                        "faces Phi depends on the depth only "
+                        "(doc/two_bodies.md, 'Contact patch test').");
       prm.declare_entry("Apex depth",
                         "1",
                         Patterns::Double(0., 1.),
@@ -149,6 +165,9 @@ namespace Signorini
       search_margin   = prm.get_double("Search margin");
       max_motion      = prm.get_double("Maximum motion");
       end_stretch     = prm.get_double("End stretch");
+      shape           = (prm.get("Indicator shape") == "partition" ?
+                           IndicatorFace<2>::Shape::partition :
+                           IndicatorFace<2>::Shape::simplex);
       const std::string hessian = prm.get("Hessian");
       hessian_mode = (hessian == "exact"     ? HessianMode::exact :
                       hessian == "projected" ? HessianMode::projected :
@@ -364,9 +383,11 @@ namespace Signorini
           {
             auto &f = faces2[i];
             f.end_stretch.fill(-1.);
+            f.free_end.fill(false);
             for (unsigned int v = 0; v < n_face_vertices; ++v)
               if (count[key(f, v)] == 1 && continued.count({i, v}) == 0)
                 {
+                  f.free_end[v]    = true;
                   f.end_stretch[v] = prm.end_stretch;
                   if (dim == 3)
                     f.end_stretch[(v + 1) % n_face_vertices] = prm.end_stretch;

@@ -45,7 +45,11 @@ namespace Signorini
           all.insert(all.end(), part.begin(), part.end());
       std::vector<IndicatorFace<dim>> faces(faces2.size());
       for (unsigned int i = 0; i < faces.size(); ++i)
-        faces[i].end_stretch = faces2[i].end_stretch;
+        {
+          faces[i].end_stretch = faces2[i].end_stretch;
+          faces[i].free_end    = faces2[i].free_end;
+          faces[i].shape       = static_cast<typename IndicatorFace<dim>::Shape>(prm.shape);
+        }
       for (unsigned int i = 0; i < faces.size(); ++i)
         for (unsigned int v = 0; v < n_face_vertices; ++v)
           for (unsigned int c = 0; c < dim; ++c)

@@ -37,6 +37,23 @@ namespace Signorini
      * the sum over faces Phi = sum_T F_T has no zero line at shared
      * vertices.
      *
+     * A second shape, 'partition' (not in the poster), is built so that
+     * Phi is the same everywhere along a flat surface of equal faces, as
+     * the contact patch test needs (doc/two_bodies.md): over each face a
+     * prism normal to it (2D: a strip), with affine coordinates t along
+     * the face (2D: t in [0, 1] from B to C; 3D: (t1, t2) in [0, 1]^2 in
+     * the frame of the quad's midlines) and the depth d below the face,
+     *
+     *   F(x) = g(d / H) W(t),  g(eta) = 64 <eta>^3 <1 - eta>^3,
+     *
+     * H the apex's height over the face. W is a product of one C^2
+     * smoothstep ramp per face end: at an end shared with a neighbour it
+     * rises over [-s, s], so that the ramps of the two faces sum to 1; at
+     * a free end (free_end) it rises over [-s_end, 0], so that Phi keeps
+     * its full strength up to the end. F is C^2, vanishes outside the
+     * body and on the surface, and the weights of the faces around a
+     * point sum to 1 wherever the faces are flat and equal.
+     *
      * The variables of one face term are the coordinates of the point x
      * and of the cell's vertices that define the simplices: x, the face
      * vertices, the opposite face's vertices (2D: 5 points, 10 variables;
@@ -67,6 +84,20 @@ namespace Signorini
       /// of the common one (for the free ends of a contact surface, e.g.
       /// on a symmetry plane, where no neighbouring face overlaps).
       std::array<double, n_face_vertices> end_stretch = make_negative();
+
+      /// Which indicator: the poster's simplices or the partition of
+      /// unity over prisms (see above).
+      enum class Shape
+      {
+        simplex,
+        partition
+      };
+      Shape shape = Shape::simplex;
+
+      /// For the partition shape: whether end v is a free end of the
+      /// target surface (2D: vertex v; 3D: the edge from vertex v to
+      /// vertex v + 1).
+      std::array<bool, n_face_vertices> free_end{};
 
       /// Sum of the face's simplex terms F_T at x. The apex lies the
       /// fraction @p apex_depth of the way from the face's centroid to the

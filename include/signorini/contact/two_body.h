@@ -48,6 +48,8 @@ namespace Signorini
       double             search_margin   = 1.;
       double             max_motion      = 0.5;
       double             end_stretch     = 1.;
+      /// 'Indicator shape'.
+      typename IndicatorFace<2>::Shape shape = IndicatorFace<2>::Shape::simplex;
       /// 'Hessian': which pair Hessians are projected (negative
       /// eigenvalues clipped).
       enum class HessianMode
@@ -367,6 +369,7 @@ namespace Signorini
         std::array<double, n_target_dofs>                  X;
         double                                             h;
         std::array<double, n_face_vertices> end_stretch; // -1: common
+        std::array<bool, n_face_vertices>   free_end{};
 
         template <class Archive>
         void
