@@ -194,6 +194,7 @@ namespace Signorini
                      const double                                                  stretch,
                      const std::array<double, IndicatorFace<dim>::n_face_vertices> &end_stretch,
                      const std::array<bool, IndicatorFace<dim>::n_face_vertices>   &free_end,
+                     const std::array<double, IndicatorFace<dim>::n_face_vertices> &ramp,
                      const double apex_depth,
                      double      *depth = nullptr)
       {
@@ -291,10 +292,11 @@ namespace Signorini
             const unsigned int lo = lower[k], hi = upper[k];
             // A free end's width is the end stretch (3D: set at the
             // edge's first vertex), a shared end's the common stretch.
-            weight *= end_weight<Number>(t[k], free_end[lo],
-                                         free_end[lo] ? end_stretch[lo] : stretch);
-            weight *= end_weight<Number>(1. - t[k], free_end[hi],
-                                         free_end[hi] ? end_stretch[hi] : stretch);
+            const auto width = [&](const unsigned int e) {
+              return free_end[e] ? end_stretch[e] : ramp[e] > 0. ? ramp[e] : stretch;
+            };
+            weight *= end_weight<Number>(t[k], free_end[lo], width(lo));
+            weight *= end_weight<Number>(1. - t[k], free_end[hi], width(hi));
           }
         const Number one_minus = 1. - eta;
         const Number term      = 64. * eta * eta * eta * one_minus * one_minus * one_minus * weight;
@@ -341,7 +343,7 @@ namespace Signorini
     {
       if (shape == Shape::partition)
         return partition_term<dim, double>(gather<dim, double>(*this, x),
-                                           stretch, stretches(stretch), free_end, apex_depth);
+                                           stretch, stretches(stretch), free_end, ramp, apex_depth);
       return face_term<dim, double>(gather<dim, double>(*this, x),
                                     stretches(stretch),
                                     apex_depth);
@@ -356,7 +358,7 @@ namespace Signorini
       double d = -1.;
       if (shape == Shape::partition)
         partition_term<dim, double>(gather<dim, double>(*this, x), stretch,
-                                    stretches(stretch), free_end, apex_depth, &d);
+                                    stretches(stretch), free_end, ramp, apex_depth, &d);
       else
         face_term<dim, double>(gather<dim, double>(*this, x), stretches(stretch),
                                apex_depth, &d);
@@ -384,7 +386,7 @@ namespace Signorini
           }
       const Outer result =
         shape == Shape::partition ?
-          partition_term<dim, Outer>(p, stretch, stretches(stretch), free_end, apex_depth) :
+          partition_term<dim, Outer>(p, stretch, stretches(stretch), free_end, ramp, apex_depth) :
           face_term<dim, Outer>(p, stretches(stretch), apex_depth);
       gradient.reinit(n_variables);
       hessian.reinit(n_variables, n_variables);
@@ -437,8 +439,22 @@ namespace Signorini
         }
       else
         {
+          // The base: the plane through three face vertices, or for the
+          // partition shape its own plane (through the face's centroid,
+          // normal to its midlines), so that a point of a warped face is
+          // inside exactly where that shape sees it below the face.
+          std::array<Point<dim>, 3> base = {{face[0], face[1], face[2]}};
+          if (shape == Shape::partition)
+            {
+              Point<dim> G;
+              for (const auto &q : face)
+                G += q / double(nf);
+              const Tensor<1, dim> a1 = 0.5 * (face[1] + face[2] - face[0] - face[3]);
+              const Tensor<1, dim> a2 = 0.5 * (face[2] + face[3] - face[0] - face[1]);
+              base = {{G, G + a1, G + a2}};
+            }
           std::vector<std::array<Point<dim>, 3>> sides = {
-            {{face[0], face[1], face[2]}}, {{opposite[0], opposite[1], opposite[2]}}};
+            base, {{opposite[0], opposite[1], opposite[2]}}};
           for (unsigned int v = 0; v < nf; ++v)
             sides.push_back({{face[v], face[(v + 1) % nf], opposite[v]}});
           for (unsigned int i = 0; i < sides.size(); ++i)

@@ -99,7 +99,7 @@ namespace Signorini
                         "vertex is about 25 times weaker than mid-face and "
                         "vanishes below 0.2 of the cell depth [-].");
       prm.declare_entry("Indicator shape",
-                        "simplex",
+                        "partition",
                         Patterns::Selection("simplex|partition"),
                         "simplex: the poster's construction, a sum over body "
                         "2's faces of C^2 bumps on stretched simplices; along "
@@ -328,9 +328,16 @@ namespace Signorini
             }
           return k;
         };
+        // The smallest face at each end (vertex in 2D, edge in 3D).
+        std::map<std::vector<types::global_dof_index>, double> smallest;
         for (const auto &f : faces2)
           for (unsigned int v = 0; v < n_face_vertices; ++v)
-            ++count[key(f, v)];
+            {
+              ++count[key(f, v)];
+              const auto it = smallest.find(key(f, v));
+              smallest[key(f, v)] =
+                (it == smallest.end() ? f.h : std::min(it->second, f.h));
+            }
         // In 3D an edge of one face is not a free end if it lies along
         // edges of other faces: where the refinement level changes, a
         // coarse face's edge holds two fine faces' edges (with a hanging
@@ -376,6 +383,10 @@ namespace Signorini
                      (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b))))
                   {
                     continued.insert({e.face, e.vertex});
+                    // Across a change of refinement level the neighbour
+                    // is the other face along the edge.
+                    const auto k = key(faces2[e.face], e.vertex);
+                    smallest[k] = std::min(smallest[k], faces2[o.face].h);
                     break;
                   }
           }
@@ -384,6 +395,11 @@ namespace Signorini
             auto &f = faces2[i];
             f.end_stretch.fill(-1.);
             f.free_end.fill(false);
+            // The partition shape's ramp at a shared end spans s times the
+            // smaller face's size on either side, so that the ramps of
+            // faces of different sizes still sum to 1.
+            for (unsigned int v = 0; v < n_face_vertices; ++v)
+              f.ramp[v] = prm.stretch * std::min(1., smallest[key(f, v)] / f.h);
             for (unsigned int v = 0; v < n_face_vertices; ++v)
               if (count[key(f, v)] == 1 && continued.count({i, v}) == 0)
                 {

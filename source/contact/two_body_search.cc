@@ -48,6 +48,7 @@ namespace Signorini
         {
           faces[i].end_stretch = faces2[i].end_stretch;
           faces[i].free_end    = faces2[i].free_end;
+          faces[i].ramp        = faces2[i].ramp;
           faces[i].shape       = static_cast<typename IndicatorFace<dim>::Shape>(prm.shape);
         }
       for (unsigned int i = 0; i < faces.size(); ++i)

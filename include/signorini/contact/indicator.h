@@ -48,7 +48,8 @@ namespace Signorini
      *
      * H the apex's height over the face. W is a product of one C^2
      * smoothstep ramp per face end: at an end shared with a neighbour it
-     * rises over [-s, s], so that the ramps of the two faces sum to 1; at
+     * rises over [-s, s] (s from 'ramp' where set, else the common
+     * stretch), so that the ramps of the two faces sum to 1; at
      * a free end (free_end) it rises over [-s_end, 0], so that Phi keeps
      * its full strength up to the end. F is C^2, vanishes outside the
      * body and on the surface, and the weights of the faces around a
@@ -98,6 +99,12 @@ namespace Signorini
       /// target surface (2D: vertex v; 3D: the edge from vertex v to
       /// vertex v + 1).
       std::array<bool, n_face_vertices> free_end{};
+
+      /// For the partition shape: per end, if > 0, the half-width of the
+      /// ramp at a shared end as a fraction of this face (instead of the
+      /// common stretch): s times the smaller neighbour's size over this
+      /// face's, so that the ramps of unequal faces still sum to 1.
+      std::array<double, n_face_vertices> ramp{};
 
       /// Sum of the face's simplex terms F_T at x. The apex lies the
       /// fraction @p apex_depth of the way from the face's centroid to the

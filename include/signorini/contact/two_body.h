@@ -49,7 +49,7 @@ namespace Signorini
       double             max_motion      = 0.5;
       double             end_stretch     = 1.;
       /// 'Indicator shape'.
-      typename IndicatorFace<2>::Shape shape = IndicatorFace<2>::Shape::simplex;
+      typename IndicatorFace<2>::Shape shape = IndicatorFace<2>::Shape::partition;
       /// 'Hessian': which pair Hessians are projected (negative
       /// eigenvalues clipped).
       enum class HessianMode
@@ -370,6 +370,7 @@ namespace Signorini
         double                                             h;
         std::array<double, n_face_vertices> end_stretch; // -1: common
         std::array<bool, n_face_vertices>   free_end{};
+        std::array<double, n_face_vertices> ramp{};      // partition shape
 
         template <class Archive>
         void
