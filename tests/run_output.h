@@ -167,6 +167,13 @@ namespace RunOutput
     return true;
   }
 
+  /// Whether summary.json @p file holds the entry `"key": true`.
+  inline bool
+  summary_flag(const std::string &file, const std::string &key)
+  {
+    return read_text(file).find("\"" + key + "\": true") != std::string::npos;
+  }
+
   /// The first number stored under @p key in @p numbers (from
   /// summary_numbers()), NaN if there is none.
   inline double

@@ -5,7 +5,8 @@
 // - both runs converge and meet the scene's Hertz tolerances (exit 0);
 // - a, p0 and the total contact force of the two solvers agree to 1e-5
 //   (both minimise the same G_mu to their tolerances; measured: 6e-8);
-// - the Ipopt run ends with the penetration the continuation asks for;
+// - the Ipopt run ends with the penetration the continuation asks for
+//   (summary.json: "penetration tolerance met");
 // - Ipopt minimises every stage but at most the first of each load step:
 //   one that starts with the cylinder held only by contact at zero
 //   penetration has a singular Hessian, which Ipopt may take for a
@@ -58,10 +59,12 @@ main()
           std::cerr << form << " " << q << " newton " << a << " ipopt " << b
                     << " relative difference " << difference << "\n";
         }
-      const double penetration =
-        summary_quantity(ipopt + "/summary.json", "max_penetration_over_h");
-      out << form << ": Ipopt run's penetration / h <= 1e-3: "
-          << verdict(penetration <= 1e-3) << "\n";
+      // The points the penalty acts on (the integral form's Gauss points;
+      // its nodes between them are reported but not penalised).
+      out << form << ": Ipopt run meets the penetration tolerance 1e-3 h: "
+          << verdict(RunOutput::summary_flag(ipopt + "/summary.json",
+                                             "penetration tolerance met"))
+          << "\n";
       const auto   numbers = RunOutput::summary_numbers(ipopt + "/summary.json");
       const double by_newton =
         RunOutput::first_number(numbers, "ipopt stages minimised by newton");
