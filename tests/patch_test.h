@@ -75,3 +75,22 @@ patch_test(std::ostream      &out,
   out << name << ": moment about the origin = p's (2%): "
       << RunOutput::verdict(moment) << "\n";
 }
+
+/// The variants both tests run: the scene's (integral form, K = 4,
+/// partition indicator), K = 2, and the poster's nodal and integral (K = 2)
+/// forms with the simplex indicator.
+inline void
+patch_test_variants(std::ostream      &out,
+                    const std::string &scene,
+                    const unsigned int dim,
+                    const double       goal)
+{
+  const std::string form   = "subsection Contact\n  subsection Two bodies\n";
+  const std::string poster = "    set Indicator shape = simplex\n";
+  const std::string k2     = "    set Gauss points per face = 2\n  end\nend\n";
+  patch_test(out, "partition_integral_K4", scene, "", dim, goal);
+  patch_test(out, "partition_integral_K2", scene, form + k2, dim, goal);
+  patch_test(out, "poster_nodal", scene,
+             form + poster + "    set Contact form = nodal\n  end\nend\n", dim, goal);
+  patch_test(out, "poster_integral_K2", scene, form + poster + k2, dim, goal);
+}

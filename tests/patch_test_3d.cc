@@ -11,14 +11,6 @@
 int
 main()
 {
-  std::ofstream     out("output");
-  const std::string form = "subsection Contact\n  subsection Two bodies\n";
-  const std::string poster = "    set Indicator shape = simplex\n";
-  patch_test(out, "partition_integral_K4", "patch_test_3d.prm", "", 3, 0.02);
-  patch_test(out, "partition_integral_K2", "patch_test_3d.prm",
-             form + "    set Gauss points per face = 2\n  end\nend\n", 3, 0.02);
-  patch_test(out, "poster_nodal", "patch_test_3d.prm",
-             form + poster + "    set Contact form = nodal\n  end\nend\n", 3, 0.02);
-  patch_test(out, "poster_integral_K2", "patch_test_3d.prm",
-             form + poster + "    set Gauss points per face = 2\n  end\nend\n", 3, 0.02);
+  std::ofstream out("output");
+  patch_test_variants(out, "patch_test_3d.prm", 3, 0.02);
 }
