@@ -913,6 +913,11 @@ namespace Signorini
             }
         }
       GridTools::delete_unused_vertices(vertices, cells, subcells);
+      // Lines in standard orientation: on several ranks deal.II 9.4's DoF
+      // distribution left DoFs of hanging vertices on no cell for the
+      // octant ball, whose coarse cells (deal.II's octant, turned) have
+      // lines in both orientations.
+      GridTools::consistently_order_cells(cells);
       result.create_triangulation(vertices, cells, subcells);
     }
   } // namespace

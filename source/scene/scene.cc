@@ -2,6 +2,8 @@
 #include <signorini/scene/mesh.h>
 #include <signorini/scene/scene.h>
 
+#include <stdexcept>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -115,12 +117,46 @@ namespace Signorini
 
   template <int dim>
   void
+  Scene<dim>::check_every_dof_on_a_cell() const
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    // Every rank marks the DoFs of its cells; the owners read the marks.
+    VectorType marks;
+    marks.reinit(locally_owned, locally_relevant, comm, true);
+    std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (const auto i : dofs)
+            marks(i) = 1.;
+        }
+    marks.compress(VectorOperation::insert);
+    unsigned int orphans = 0;
+    for (const auto i : locally_owned)
+      orphans += (marks[i] == 0.);
+    orphans = Utilities::MPI::sum(orphans, comm);
+    if (orphans > 0)
+      throw std::runtime_error(
+        "deal.II's DoF distribution on " +
+        std::to_string(Utilities::MPI::n_mpi_processes(comm)) + " MPI ranks left " +
+        std::to_string(orphans) + " of its " + std::to_string(dof_handler.n_dofs()) +
+        " DoFs on no cell (a deal.II 9.4 problem with some 3D meshes with hanging "
+        "nodes on several ranks, e.g. the octant ball at 'Global refinements = 3' "
+        "and 5 local levels on 2 ranks); the system would be singular. Run this "
+        "mesh on another number of ranks or change its refinement.");
+  }
+
+  template <int dim>
+  void
   Scene<dim>::setup_dofs(Contact::Model<dim> *contact)
   {
     contact_model = contact;
     dof_handler.distribute_dofs(*fe);
     locally_owned    = dof_handler.locally_owned_dofs();
     locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    check_every_dof_on_a_cell();
 
     hanging_constraints.clear();
     hanging_constraints.reinit(locally_relevant);

@@ -92,7 +92,7 @@ namespace Signorini
       for (std::size_t k = 0; k < n_owned; ++k)
         {
           const int c = component[k];
-          Assert(c >= 0, ExcInternalError());
+          AssertThrow(c >= 0, ExcMessage("near null space: an owned DoF on no owned cell"));
           const Tensor<1, dim> r = scale * (points[k] - centre);
           result.modes[c][k]     = 1.;
           if (dim == 2)

@@ -69,6 +69,12 @@ namespace Signorini
     void
     setup_dofs(Contact::Model<dim> *contact);
 
+    /// On several ranks: throw std::runtime_error with the reason if a DoF
+    /// lies on no cell of any rank (deal.II 9.4's DoF distribution does
+    /// that on some 3D meshes with hanging nodes; collective).
+    void
+    check_every_dof_on_a_cell() const;
+
     /// Rebuild the Hessian's sparsity pattern with the contact couplings
     /// found at the ghosted state @p u (collective).
     void
