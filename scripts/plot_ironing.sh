@@ -3,7 +3,8 @@
 # iterations and largest penetration per load step, for one or more runs
 # of prm/ironing.prm (e.g. the nodal and the integral form), and the
 # smoothness measure of the slide: the largest step-to-step jump of the
-# horizontal reaction relative to the vertical one, over t > 1.
+# horizontal reaction relative to the vertical one, over t > 1 (the
+# vertical is Ry in 2D, Rz in 3D).
 # Reads DIR/reactions.csv and DIR/load_steps.csv of each run; writes
 # ironing_reactions.png and ironing_steps.png into OUT (default: the first
 # DIR). Needs gnuplot (installed by scripts/setup.sh).
@@ -26,7 +27,9 @@ for dir in "$@"; do
   c=${colors[$((k % 4))]}
   # reactions.csv: time,Rx_<id>,Ry_<id>: the support's force on the die;
   # the die pushes the block with the opposite force.
-  reactions+="'$dir/reactions.csv' every ::1 using 1:(-\$3) with lines lw 2 lc rgb '$c' title '$name: vertical', "
+  # The vertical reaction: Ry in 2D, Rz in 3D (a fourth column).
+  v=3; [ "$(head -1 "$dir/reactions.csv" | tr ',' '\n' | wc -l)" -ge 4 ] && v=4
+  reactions+="'$dir/reactions.csv' every ::1 using 1:(-\$$v) with lines lw 2 lc rgb '$c' title '$name: vertical', "
   reactions+="'$dir/reactions.csv' every ::1 using 1:(-\$2) with lines lw 2 dt 2 lc rgb '$c' title '$name: horizontal', "
   header=$(head -1 "$dir/load_steps.csv")
   col() { echo "$header" | tr ',' '\n' | { grep -nx "$1" || true; } | cut -d: -f1; }
@@ -35,13 +38,13 @@ for dir in "$@"; do
   steps+="'$dir/load_steps.csv' every ::1 using $(col time):$its with impulses lw 1 lc rgb '$c' title '$name', "
   penetration+="'$dir/load_steps.csv' every ::1 using $(col time):$(col max_penetration_over_h) with points pt 7 ps 0.5 lc rgb '$c' title '$name', "
   newton=$(awk -F, -v c="$its" 'NR > 1 { s += $c } END { print s }' "$dir/load_steps.csv")
-  awk -F, -v name="$name" -v newton="$newton" '
+  awk -F, -v name="$name" -v newton="$newton" -v v="$v" '
     NR == 1 { next }
     { n++ }
-    $1 <= 1 + 1e-12 { ry1 = -$3; rx1 = -$2 }
+    $1 <= 1 + 1e-12 { ry1 = -$v; rx1 = -$2 }
     $1 > 1 + 1e-12 && have {
-      jump = ($2 - px) / $3; if (jump < 0) jump = -jump; if (jump > worst) worst = jump
-      ratio = $2 / $3; if (ratio < 0) ratio = -ratio; sum += ratio; m++ }
+      jump = ($2 - px) / $v; if (jump < 0) jump = -jump; if (jump > worst) worst = jump
+      ratio = $2 / $v; if (ratio < 0) ratio = -ratio; sum += ratio; m++ }
     { px = $2; have = 1 }
     END { printf "%-28s %6d %8d %12.4e %12.4e %14.4f %14.4f\n", name, n, newton, ry1, rx1, worst, (m ? sum / m : 0) }' \
     "$dir/reactions.csv"

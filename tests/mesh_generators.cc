@@ -291,6 +291,12 @@ main(int argc, char **argv)
     build_scene_mesh<3>(mesh, {g}, {0}, tria);
     measure(tria, {{0, (R * angle + 2 * (h - s)) * l}, {1, w * l}, {2, section}, {3, section}},
             section * l, "die (3D)", out);
+    // Subdivisions 4, 3, 2: 3 cell layers along y (the extrusion used to
+    // give one fewer), each a copy of the 4 x 2 section.
+    parallel::distributed::Triangulation<3> coarse(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, coarse, true);
+    out << "die (3D): coarse cells = 4 x 3 x 2: "
+        << (coarse.n_global_active_cells() == 24 ? "yes" : "NO") << "\n";
     const Point<3> axis(0., 0., R);
     surface_check("die (3D): vertices of the arc and sides (id 0) on the arc or a side",
                   off_surface(tria, 0, [&](const Point<3> &x) {

@@ -650,7 +650,9 @@ namespace Signorini
       std::vector<ManifoldSpec<2>> section_manifolds;
       build_body<2>(section, 0, 0, flat, section_manifolds);
       const Point<2> arc_center = section_manifolds.front().center;
-      GridGenerator::extrude_triangulation(flat, slices, y_max - y_min, tria);
+      // extrude_triangulation() takes the number of vertex layers, one
+      // more than the cell layers asked for.
+      GridGenerator::extrude_triangulation(flat, slices + 1, y_max - y_min, tria);
       tria.reset_all_manifolds();
       GridTools::transform(
         [y_max](const Point<3> &p) { return Point<3>(p[0], y_max - p[2], p[1]); },
