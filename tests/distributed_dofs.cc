@@ -8,13 +8,13 @@
 // 2 ranks; both print the same.
 
 #include <signorini/scene/mesh.h>
+#include <signorini/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <fstream>
 #include <string>
@@ -39,23 +39,7 @@ namespace
     const FESystem<3> fe(FE_Q<3>(1), 3);
     DoFHandler<3>     dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    const IndexSet owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
-    TrilinosWrappers::MPI::Vector marks;
-    marks.reinit(owned, relevant, comm, true);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (const auto i : dofs)
-            marks(i) = 1.;
-        }
-    marks.compress(VectorOperation::insert);
-    unsigned int orphans = 0;
-    for (const auto i : owned)
-      orphans += (marks[i] == 0.);
-    return {dof_handler.n_dofs(), Utilities::MPI::sum(orphans, comm)};
+    return {dof_handler.n_dofs(), n_dofs_on_no_cell(dof_handler)};
   }
 } // namespace
 

@@ -116,37 +116,50 @@ namespace Signorini
   }
 
   template <int dim>
-  void
-  Scene<dim>::check_every_dof_on_a_cell() const
+  unsigned int
+  n_dofs_on_no_cell(const DoFHandler<dim> &dof_handler)
   {
-    if (Utilities::MPI::n_mpi_processes(comm) == 1)
-      return;
+    const MPI_Comm comm  = dof_handler.get_communicator();
+    const IndexSet owned = dof_handler.locally_owned_dofs();
     // Every rank marks the DoFs of its cells; the owners read the marks.
     VectorType marks;
-    marks.reinit(locally_owned, locally_relevant, comm, true);
-    std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+    marks.reinit(owned, DoFTools::extract_locally_relevant_dofs(dof_handler), comm, true);
+    std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           for (const auto i : dofs)
             marks(i) = 1.;
         }
     marks.compress(VectorOperation::insert);
     unsigned int orphans = 0;
-    for (const auto i : locally_owned)
+    for (const auto i : owned)
       orphans += (marks[i] == 0.);
-    orphans = Utilities::MPI::sum(orphans, comm);
+    return Utilities::MPI::sum(orphans, comm);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::check_every_dof_on_a_cell() const
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    const unsigned int orphans = n_dofs_on_no_cell(dof_handler);
     if (orphans > 0)
       throw std::runtime_error(
         "deal.II's DoF distribution on " +
         std::to_string(Utilities::MPI::n_mpi_processes(comm)) + " MPI ranks left " +
         std::to_string(orphans) + " of its " + std::to_string(dof_handler.n_dofs()) +
         " DoFs on no cell (a deal.II 9.4 problem with some 3D meshes with hanging "
-        "nodes on several ranks, e.g. the octant ball at 'Global refinements = 3' "
-        "and 5 local levels on 2 ranks); the system would be singular. Run this "
-        "mesh on another number of ranks or change its refinement.");
+        "nodes on several ranks whose coarse cells are not in standard "
+        "orientation); the system would be singular. Run this mesh on another "
+        "number of ranks or change its refinement.");
   }
+
+  template unsigned int n_dofs_on_no_cell(const DoFHandler<2> &);
+  template unsigned int n_dofs_on_no_cell(const DoFHandler<3> &);
 
   template <int dim>
   void

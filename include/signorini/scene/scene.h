@@ -28,6 +28,13 @@ namespace Signorini
    * contact model asks for), the state vectors, and refinement with
    * solution transfer. It knows no solver and no concrete contact model.
    */
+  /// The number of DoFs of @p dof_handler that lie on no locally owned
+  /// cell of any rank (collective; deal.II 9.4 leaves such DoFs on some 3D
+  /// meshes on several ranks).
+  template <int dim>
+  unsigned int
+  n_dofs_on_no_cell(const DoFHandler<dim> &dof_handler);
+
   template <int dim>
   class Scene
   {
