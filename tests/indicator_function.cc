@@ -26,7 +26,7 @@ using namespace Signorini;
 
 constexpr double stretch = 0.12;
 
-using Shape = Contact::IndicatorFace<2>::Shape;
+using Shape = Contact::IndicatorShape;
 
 template <int dim>
 Contact::IndicatorFace<dim>
@@ -36,7 +36,7 @@ unit_face(std::mt19937 &rng, const double jitter, const double depth, const doub
   // Face on x_d = 0, cell below it down to x_d = -depth.
   std::uniform_real_distribution<double> u(-1., 1.);
   Contact::IndicatorFace<dim>            f;
-  f.shape = static_cast<typename Contact::IndicatorFace<dim>::Shape>(shape);
+  f.shape = shape;
   const std::array<std::array<double, 2>, 4> corners = {
     {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}}};
   for (unsigned int v = 0; v < f.n_face_vertices; ++v)
@@ -166,7 +166,7 @@ check_sampling(const double stretch, std::ostream &out, const Shape shape = Shap
     for (unsigned int j = 0; j + 1 < ys.size(); ++j)
       {
         Contact::IndicatorFace<dim> f;
-        f.shape = static_cast<typename Contact::IndicatorFace<dim>::Shape>(shape);
+        f.shape = shape;
         if (dim == 2)
           {
             f.face[0][0] = xs[i];

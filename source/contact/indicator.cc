@@ -306,6 +306,18 @@ namespace Signorini
         return term;
       }
 
+      /// A quad face's centroid and midlines (cyclic vertices Q0..Q3): a1
+      /// from edge 3-0 to edge 1-2, a2 from edge 0-1 to edge 2-3, the frame
+      /// of the partition shape (partition_term() builds the same one in
+      /// its AD numbers).
+      std::array<Tensor<1, 3>, 3>
+      centroid_and_midlines(const std::array<Point<3>, 4> &q)
+      {
+        return {{0.25 * (q[0] + q[1] + q[2] + q[3]),
+                 0.5 * (q[1] + q[2] - q[0] - q[3]),
+                 0.5 * (q[2] + q[3] - q[0] - q[1])}};
+      }
+
       template <int dim, typename Number>
       std::array<std::array<Number, dim>, IndicatorFace<dim>::n_points>
       gather(const IndicatorFace<dim> &f, const Point<dim> &x)
@@ -446,12 +458,8 @@ namespace Signorini
           std::array<Point<dim>, 3> base = {{face[0], face[1], face[2]}};
           if (shape == Shape::partition)
             {
-              Point<dim> G;
-              for (const auto &q : face)
-                G += q / double(nf);
-              const Tensor<1, dim> a1 = 0.5 * (face[1] + face[2] - face[0] - face[3]);
-              const Tensor<1, dim> a2 = 0.5 * (face[2] + face[3] - face[0] - face[1]);
-              base = {{G, G + a1, G + a2}};
+              const auto [G, a1, a2] = centroid_and_midlines(face);
+              base = {{Point<dim>(G), Point<dim>(G + a1), Point<dim>(G + a2)}};
             }
           std::vector<std::array<Point<dim>, 3>> sides = {
             base, {{opposite[0], opposite[1], opposite[2]}}};
@@ -498,15 +506,19 @@ namespace Signorini
         {
           // The prism's far side: the face moved by the apex's height
           // along the face's normal.
-          Point<dim> G;
-          for (const auto &q : face)
-            G += q / double(n_face_vertices);
+          Point<dim>     G;
           Tensor<1, dim> n;
           if constexpr (dim == 2)
-            n = Tensor<1, dim>({face[0][1] - face[1][1], face[1][0] - face[0][0]});
+            {
+              G = 0.5 * (face[0] + face[1]);
+              n = Tensor<1, dim>({face[0][1] - face[1][1], face[1][0] - face[0][0]});
+            }
           else
-            n = cross_product_3d(0.5 * (face[1] + face[2] - face[0] - face[3]),
-                                 0.5 * (face[2] + face[3] - face[0] - face[1]));
+            {
+              const auto [centroid, a1, a2] = centroid_and_midlines(face);
+              G = Point<dim>(centroid);
+              n = cross_product_3d(a1, a2);
+            }
           n /= n.norm();
           const Tensor<1, dim> up = (n * (apex - G)) * n;
           for (const auto &q : face)

@@ -166,8 +166,8 @@ namespace Signorini
       max_motion      = prm.get_double("Maximum motion");
       end_stretch     = prm.get_double("End stretch");
       shape           = (prm.get("Indicator shape") == "partition" ?
-                           IndicatorFace<2>::Shape::partition :
-                           IndicatorFace<2>::Shape::simplex);
+                           IndicatorShape::partition :
+                           IndicatorShape::simplex);
       const std::string hessian = prm.get("Hessian");
       hessian_mode = (hessian == "exact"     ? HessianMode::exact :
                       hessian == "projected" ? HessianMode::projected :
@@ -333,10 +333,11 @@ namespace Signorini
         for (const auto &f : faces2)
           for (unsigned int v = 0; v < n_face_vertices; ++v)
             {
-              ++count[key(f, v)];
-              const auto it = smallest.find(key(f, v));
-              smallest[key(f, v)] =
-                (it == smallest.end() ? f.h : std::min(it->second, f.h));
+              const auto k = key(f, v);
+              ++count[k];
+              const auto [it, first] = smallest.try_emplace(k, f.h);
+              if (!first)
+                it->second = std::min(it->second, f.h);
             }
         // In 3D an edge of one face is not a free end if it lies along
         // edges of other faces: where the refinement level changes, a

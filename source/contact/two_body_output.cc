@@ -247,7 +247,7 @@ namespace Signorini
         c["gauss points per face"] = prm.gauss_points;
       c["stretch"]           = prm.stretch;
       c["indicator shape"] =
-        prm.shape == IndicatorFace<2>::Shape::partition ? "partition" : "simplex";
+        prm.shape == IndicatorShape::partition ? "partition" : "simplex";
       {
         // Body 2's side, from the reaction of the penalty term on its
         // target nodes (at the last profile written).

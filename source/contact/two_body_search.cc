@@ -49,7 +49,7 @@ namespace Signorini
           faces[i].end_stretch = faces2[i].end_stretch;
           faces[i].free_end    = faces2[i].free_end;
           faces[i].ramp        = faces2[i].ramp;
-          faces[i].shape       = static_cast<typename IndicatorFace<dim>::Shape>(prm.shape);
+          faces[i].shape       = prm.shape;
         }
       for (unsigned int i = 0; i < faces.size(); ++i)
         for (unsigned int v = 0; v < n_face_vertices; ++v)

@@ -60,6 +60,14 @@ namespace Signorini
      * vertices, the opposite face's vertices (2D: 5 points, 10 variables;
      * 3D: 9 points, 27 variables), in this order.
      */
+    /// Which indicator a face term is: the poster's simplices or the
+    /// partition of unity over prisms (IndicatorFace).
+    enum class IndicatorShape
+    {
+      simplex,
+      partition
+    };
+
     template <int dim>
     struct IndicatorFace
     {
@@ -86,13 +94,7 @@ namespace Signorini
       /// on a symmetry plane, where no neighbouring face overlaps).
       std::array<double, n_face_vertices> end_stretch = make_negative();
 
-      /// Which indicator: the poster's simplices or the partition of
-      /// unity over prisms (see above).
-      enum class Shape
-      {
-        simplex,
-        partition
-      };
+      using Shape = IndicatorShape;
       Shape shape = Shape::simplex;
 
       /// For the partition shape: whether end v is a free end of the

@@ -49,7 +49,7 @@ namespace Signorini
       double             max_motion      = 0.5;
       double             end_stretch     = 1.;
       /// 'Indicator shape'.
-      typename IndicatorFace<2>::Shape shape = IndicatorFace<2>::Shape::partition;
+      IndicatorShape     shape           = IndicatorShape::partition;
       /// 'Hessian': which pair Hessians are projected (negative
       /// eigenvalues clipped).
       enum class HessianMode

@@ -21,13 +21,6 @@ namespace Signorini
 {
   using namespace dealii;
 
-  /**
-   * The discretised scene: the mesh of the bodies and their materials, the
-   * boundary conditions, the finite element and mapping, the DoFs, their
-   * constraints, the Hessian's sparsity pattern (with the couplings the
-   * contact model asks for), the state vectors, and refinement with
-   * solution transfer. It knows no solver and no concrete contact model.
-   */
   /// The number of DoFs of @p dof_handler that lie on no locally owned
   /// cell of any rank (collective; deal.II 9.4 leaves such DoFs on some 3D
   /// meshes on several ranks).
@@ -35,6 +28,13 @@ namespace Signorini
   unsigned int
   n_dofs_on_no_cell(const DoFHandler<dim> &dof_handler);
 
+  /**
+   * The discretised scene: the mesh of the bodies and their materials, the
+   * boundary conditions, the finite element and mapping, the DoFs, their
+   * constraints, the Hessian's sparsity pattern (with the couplings the
+   * contact model asks for), the state vectors, and refinement with
+   * solution transfer. It knows no solver and no concrete contact model.
+   */
   template <int dim>
   class Scene
   {
