@@ -72,7 +72,8 @@ namespace Signorini
 
 
     fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(p.discretization.degree), dim);
-    mapping = std::make_unique<MappingQ<dim>>(p.discretization.mapping_degree);
+    mapping = std::make_unique<MappingQCache<dim>>(p.discretization.mapping_degree);
+    cache_mapping();
   }
 
   template <int dim>
@@ -163,9 +164,20 @@ namespace Signorini
 
   template <int dim>
   void
+  Scene<dim>::cache_mapping()
+  {
+    // The cache drops its points at any change of the mesh; the points
+    // are those MappingQ computes (bitwise the same results), for every
+    // cell this rank has, on every level.
+    mapping->initialize(MappingQ<dim>(mapping->get_degree()), triangulation);
+  }
+
+  template <int dim>
+  void
   Scene<dim>::setup_dofs(Contact::Model<dim> *contact)
   {
     contact_model = contact;
+    cache_mapping();
     dof_handler.distribute_dofs(*fe);
     locally_owned    = dof_handler.locally_owned_dofs();
     locally_relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);

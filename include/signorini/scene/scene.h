@@ -10,6 +10,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <map>
@@ -76,6 +77,10 @@ namespace Signorini
     void
     setup_dofs(Contact::Model<dim> *contact);
 
+    /// Compute the mapping's support points of the current mesh.
+    void
+    cache_mapping();
+
     /// On several ranks: throw std::runtime_error with the reason if a DoF
     /// lies on no cell of any rank (deal.II 9.4's DoF distribution does
     /// that on some 3D meshes with hanging nodes; collective).
@@ -111,7 +116,10 @@ namespace Signorini
     MPI_Comm                                   comm;
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FESystem<dim>>             fe;
-    std::unique_ptr<MappingQ<dim>>             mapping;
+    /// The cells' MappingQ with its support points computed once per mesh
+    /// (setup_dofs()): a curved boundary's manifold is then not asked for
+    /// them again at every FEValues::reinit() of every evaluation.
+    std::unique_ptr<MappingQCache<dim>>        mapping;
     DoFHandler<dim>                            dof_handler;
     IndexSet                                   locally_owned;
     IndexSet                                   locally_relevant;

@@ -18,6 +18,13 @@ namespace Teuchos
 {
   class ParameterList;
 }
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    class PreconditionAMG;
+  }
+} // namespace dealii
 
 namespace Signorini
 {
@@ -106,9 +113,9 @@ namespace Signorini
     set_near_null_space(NearNullSpace null_space);
 
     /**
-     * Forget the direct solver's symbolic analysis. It is also redone
-     * whenever the matrix or its sparsity pattern changes, which solve()
-     * detects itself; this only frees the memory.
+     * Forget the direct solver's symbolic analysis and the AMG hierarchy.
+     * Both are also redone whenever the matrix or its sparsity pattern
+     * changes, which solve() detects itself; this only frees the memory.
      */
     void
     clear();
@@ -116,6 +123,13 @@ namespace Signorini
     /// How many symbolic analyses the direct solver has done so far.
     unsigned int
     n_symbolic_factorizations() const;
+
+    /// How many AMG hierarchies solve() has built so far.
+    unsigned int
+    n_amg_builds() const
+    {
+      return amg.n_builds;
+    }
 
     /// How many numeric factorisations the direct solver has done so far
     /// (a second solve with the same matrix values reuses the last one).
@@ -199,9 +213,27 @@ namespace Signorini
       std::unique_ptr<PETScDirectSolver>    petsc;
     };
 
+    /// Build the AMG hierarchy for @p H unless it is that of the last
+    /// solve (the same matrix object, pattern and values).
+    void
+    prepare_amg(const MatrixType &H) const;
+
+    /// The AMG hierarchy of the last iterative solve and the matrix it was
+    /// built from: its address, pattern and values (a cache: solve() is
+    /// const).
+    struct AmgState
+    {
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
+      const void  *matrix        = nullptr;
+      std::size_t  pattern_hash  = 0;
+      std::size_t  values_hash   = 0;
+      unsigned int n_builds       = 0;
+    };
+
     Parameters          parameters;
     NearNullSpace       null_space;
     mutable DirectState direct;
+    mutable AmgState    amg;
     /// negative_pivots() of the last solve.
     mutable int         last_negative_pivots = -1;
   };
