@@ -377,11 +377,31 @@ namespace Signorini
                 return false;
               return (p - (a + s * ab)).norm_square() <= 1e-20 * l2;
             };
+            // Whether the edge [p, q] is half of the edge [a, b] across a
+            // change of refinement level on a curved surface: it shares an
+            // end with it and its other end is the hanging vertex, which
+            // the manifold put on the surface, off the chord [a, b] by the
+            // arc's sag (3% of |ab| for a face of a quarter of the radius),
+            // near its midpoint.
+            const auto half_of = [](const Point<dim> &p, const Point<dim> &q,
+                                    const Point<dim> &a, const Point<dim> &b) {
+              const double     l2   = (b - a).norm_square();
+              const Point<dim> mid  = 0.5 * (a + b);
+              const auto       same = [l2](const Point<dim> &x, const Point<dim> &y) {
+                return (x - y).norm_square() <= 1e-20 * l2;
+              };
+              const auto near_mid = [&](const Point<dim> &x) {
+                return (x - mid).norm_square() <= 0.0625 * l2;
+              };
+              return ((same(p, a) || same(p, b)) && near_mid(q)) ||
+                     ((same(q, a) || same(q, b)) && near_mid(p));
+            };
             for (const auto &e : single)
               for (const auto &o : single)
                 if (o.face != e.face &&
                     ((on_segment(e.a, o.a, o.b) && on_segment(e.b, o.a, o.b)) ||
-                     (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b))))
+                     (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b)) ||
+                     half_of(e.a, e.b, o.a, o.b) || half_of(o.a, o.b, e.a, e.b)))
                   {
                     continued.insert({e.face, e.vertex});
                     // Across a change of refinement level the neighbour
