@@ -1,0 +1,112 @@
+// The checks of a whole shallow ironing path (indent by 1 over t <= 1,
+// slide 10 over 1 <= t <= 2, frictionless), shared by the 2D and 3D
+// ironing tests; computed from the run's reactions.csv, load_steps.csv and
+// summary.json in "run":
+// - the run converges and reaches t = 2;
+// - the force the die's support feels balances the contact force (the die
+//   carries no other load) in every step, to 1e-6 of the vertical force;
+// - the vertical force at t = 1 lies in [2.5e8, 4.5e8] (Code_Aster's
+//   SSNP153 has 3.3e8 with Coulomb friction 0.3);
+// - frictionless, the state at t = 2 is the mirror image of the state at
+//   t = 1 (about x = 6): Rx(2) = -Rx(1) and R_vertical(2) = R_vertical(1)
+//   within 2%;
+// - while sliding (1.2 <= t <= 1.8) the mean of |Rx| / |R_vertical| is at
+//   most `mean_ratio` and its step-to-step jump at most `jump` of the
+//   vertical force;
+// - the penetration the continuation aims at (at the Gauss points, which
+//   the penalty acts on) is met, and the die's nodes, which lie between
+//   Gauss points, penetrate at most `node_penetration` h.
+#pragma once
+
+#include "run_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <ostream>
+#include <string>
+
+namespace IroningCheck
+{
+  /// @p vertical: the name of the vertical reaction and contact force
+  /// component ("y" in 2D, "z" in 3D).
+  inline void
+  check(std::ostream     &out,
+        const int         status,
+        const std::string vertical,
+        const double      mean_ratio,
+        const double      jump,
+        const double      node_penetration)
+  {
+    using RunOutput::read_csv;
+    using RunOutput::verdict;
+    const std::string R_v = "R" + vertical + "_1", f_v = "contact_force_" + vertical;
+    out << "exit code 0: " << verdict(status == 0) << "\n";
+
+    const auto reactions = read_csv("run/reactions.csv");
+    const auto steps     = read_csv("run/load_steps.csv");
+    const bool complete  = !reactions.empty() && reactions.size() == steps.size() &&
+                          std::abs(reactions.back().at("time") - 2.) < 1e-9;
+    out << "reached t = 2: " << verdict(complete) << "\n";
+    if (!complete)
+      return;
+
+    double worst_balance = 0., rx_1 = 0., rv_1 = 0., ratio_sum = 0., worst_jump = 0.,
+           worst_penetration = 0.;
+    unsigned int sliding = 0;
+    for (unsigned int i = 0; i < steps.size(); ++i)
+      {
+        const auto  &r  = reactions[i];
+        const auto  &s  = steps[i];
+        const double t  = r.at("time");
+        const double rv = std::abs(r.at(R_v));
+        if (rv > 1e3)
+          worst_balance =
+            std::max({worst_balance,
+                      std::abs(r.at("Rx_1") + s.at("contact_force_x")) / rv,
+                      std::abs(r.at(R_v) + s.at(f_v)) / rv});
+        if (std::abs(t - 1.) < 1e-9)
+          {
+            rx_1 = r.at("Rx_1");
+            rv_1 = r.at(R_v);
+          }
+        if (t >= 1.2 - 1e-9 && t <= 1.8 + 1e-9)
+          {
+            ratio_sum += std::abs(r.at("Rx_1")) / rv;
+            ++sliding;
+            worst_jump = std::max(worst_jump,
+                                  std::abs(r.at("Rx_1") - reactions[i - 1].at("Rx_1")) / rv);
+          }
+        worst_penetration = std::max(worst_penetration, s.at("max_penetration_over_h"));
+      }
+    const double rx_2 = reactions.back().at("Rx_1"), rv_2 = reactions.back().at(R_v);
+    const double mirror_x = std::abs(rx_2 + rx_1) / std::abs(rx_1);
+    const double mirror_v = std::abs(rv_2 - rv_1) / std::abs(rv_1);
+    const double mean     = sliding > 0 ? ratio_sum / sliding : 1.;
+    const auto   percent  = [](const double x) {
+      return std::to_string(static_cast<int>(std::lround(100. * x))) + "%";
+    };
+    out << "support force balances the contact force (1e-6): "
+        << verdict(worst_balance < 1e-6) << "\n"
+        << "vertical force at t = 1 in [2.5e8, 4.5e8]: "
+        << verdict(std::abs(rv_1) > 2.5e8 && std::abs(rv_1) < 4.5e8) << "\n"
+        << "mirror: Rx(2) = -Rx(1) within 2%: " << verdict(mirror_x < 0.02) << "\n"
+        << "mirror: R" << vertical << "(2) = R" << vertical
+        << "(1) within 2%: " << verdict(mirror_v < 0.02) << "\n"
+        << "sliding (t in [1.2, 1.8], " << (sliding >= 20 ? "at least 20" : "FEWER THAN 20")
+        << " steps): mean |Rx|/|R" << vertical << "| <= " << percent(mean_ratio) << ": "
+        << verdict(mean <= mean_ratio) << "\n"
+        << "sliding: step-to-step jump of Rx <= " << percent(jump) << " of |R" << vertical
+        << "|: " << verdict(worst_jump <= jump) << "\n"
+        << "penetration tolerance (at the Gauss points) met: "
+        << verdict(RunOutput::summary_flag("run/summary.json", "penetration tolerance met"))
+        << "\n"
+        << "penetration / h at the die's nodes (between Gauss points) <= "
+        << node_penetration << ": " << verdict(worst_penetration <= node_penetration)
+        << "\n";
+    std::cerr << "balance " << worst_balance << " Rx(1) " << rx_1 << " R" << vertical
+              << "(1) " << rv_1 << " Rx(2) " << rx_2 << " R" << vertical << "(2) " << rv_2
+              << " mean ratio " << mean << " jump " << worst_jump << " penetration "
+              << worst_penetration << "\n";
+  }
+} // namespace IroningCheck
