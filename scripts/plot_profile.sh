@@ -45,7 +45,7 @@ gnuplot <<GP
 set terminal pngcairo size 900,600 enhanced font ',12'
 set output '$dir/contact_profile.png'
 set datafile separator ','
-set title "$title: contact pressure along the contact boundary"
+set title "$title: contact pressure along the contact boundary" noenhanced
 set xlabel '$xlabel'
 set ylabel 'contact pressure'
 set xrange [0:$xmax]
