@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <ostream>
 #include <string>
@@ -108,5 +109,27 @@ namespace IroningCheck
               << "(1) " << rv_1 << " Rx(2) " << rx_2 << " R" << vertical << "(2) " << rv_2
               << " mean ratio " << mean << " jump " << worst_jump << " penetration "
               << worst_penetration << "\n";
+  }
+
+  /// Run @p scene with the die's (body 1) and the block's (body 2) coarse
+  /// cells set to @p die and @p block (`Subdivisions` entries) into "run",
+  /// and write check()'s verdicts into "output".
+  inline void
+  run_and_check(const std::string &scene,
+                const std::string &die,
+                const std::string &block,
+                const std::string &vertical,
+                const double       mean_ratio,
+                const double       jump,
+                const double       node_penetration)
+  {
+    std::ofstream out("output");
+    const auto    subdivisions = [](const unsigned int body, const std::string &cells) {
+      return "subsection Body " + std::to_string(body) +
+             "\n  subsection Geometry\n    set Subdivisions = " + cells + "\n  end\nend\n";
+    };
+    const int status =
+      RunOutput::run_scene("run", scene, subdivisions(1, die) + subdivisions(2, block));
+    check(out, status, vertical, mean_ratio, jump, node_penetration);
   }
 } // namespace IroningCheck

@@ -9,17 +9,8 @@
 
 #include "ironing_check.h"
 
-#include <fstream>
-
 int
 main()
 {
-  std::ofstream out("output");
-  const int     status = RunOutput::run_scene(
-    "run", "ironing.prm",
-    "subsection Body 1\n  subsection Geometry\n    set Subdivisions = 4, 4\n"
-    "  end\nend\n"
-    "subsection Body 2\n  subsection Geometry\n    set Subdivisions = 24, 8\n"
-    "  end\nend\n");
-  IroningCheck::check(out, status, "y", 0.01, 0.02, 3e-2);
+  IroningCheck::run_and_check("ironing.prm", "4, 4", "24, 8", "y", 0.01, 0.02, 3e-2);
 }

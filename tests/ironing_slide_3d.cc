@@ -13,17 +13,8 @@
 
 #include "ironing_check.h"
 
-#include <fstream>
-
 int
 main()
 {
-  std::ofstream out("output");
-  const int     status = RunOutput::run_scene(
-    "run", "ironing_3d.prm",
-    "subsection Body 1\n  subsection Geometry\n    set Subdivisions = 6, 1, 6\n"
-    "  end\nend\n"
-    "subsection Body 2\n  subsection Geometry\n    set Subdivisions = 36, 1, 12\n"
-    "  end\nend\n");
-  IroningCheck::check(out, status, "z", 0.02, 0.08, 3e-2);
+  IroningCheck::run_and_check("ironing_3d.prm", "6, 1, 6", "36, 1, 12", "z", 0.02, 0.08, 3e-2);
 }
