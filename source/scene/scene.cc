@@ -72,8 +72,9 @@ namespace Signorini
 
 
     fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(p.discretization.degree), dim);
+    // Its support points are computed by setup_dofs(), after any further
+    // refinement of the mesh (no one uses the mapping before).
     mapping = std::make_unique<MappingQCache<dim>>(p.discretization.mapping_degree);
-    cache_mapping();
   }
 
   template <int dim>

@@ -469,7 +469,6 @@ namespace Signorini
     amg.matrix       = &A;
     amg.pattern_hash = pattern;
     amg.values_hash  = values;
-    ++amg.n_builds;
   }
 
   bool

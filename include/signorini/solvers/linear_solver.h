@@ -124,13 +124,6 @@ namespace Signorini
     unsigned int
     n_symbolic_factorizations() const;
 
-    /// How many AMG hierarchies solve() has built so far.
-    unsigned int
-    n_amg_builds() const
-    {
-      return amg.n_builds;
-    }
-
     /// How many numeric factorisations the direct solver has done so far
     /// (a second solve with the same matrix values reuses the last one).
     unsigned int
@@ -227,7 +220,6 @@ namespace Signorini
       const void  *matrix        = nullptr;
       std::size_t  pattern_hash  = 0;
       std::size_t  values_hash   = 0;
-      unsigned int n_builds       = 0;
     };
 
     Parameters          parameters;
