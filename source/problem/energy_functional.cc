@@ -7,6 +7,11 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/meshworker/mesh_loop.h>
 
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_FEVector.h>
+
+#include <algorithm>
+
 namespace Signorini
 {
   namespace
@@ -29,7 +34,24 @@ namespace Signorini
                                        update_JxW_values) :
                                       update_default)
         , with_faces(with_faces)
-      {}
+      {
+        // The element is FE_Q(p)^dim: shape function i is the scalar shape
+        // function of node shape_node[i] in component shape_component[i];
+        // node_shape[a] is node a's shape function in component 0, whose
+        // gradient is that of the node's scalar shape function.
+        const unsigned int n = fe.n_dofs_per_cell();
+        shape_component.resize(n);
+        shape_node.resize(n);
+        node_shape.resize(n / dim);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto ci      = fe.system_to_component_index(i);
+            shape_component[i] = ci.first;
+            shape_node[i]      = ci.second;
+            if (ci.first == 0)
+              node_shape[ci.second] = i;
+          }
+      }
 
       Scratch(const Scratch &other)
         : Scratch(other.fe_values.get_mapping(),
@@ -42,9 +64,10 @@ namespace Signorini
       bool                              with_faces;
       std::vector<Tensor<1, dim>>       values;
       std::vector<Vector<double>>       loads;
-      std::vector<Tensor<1, dim>>       shape_grads;
+      std::vector<Tensor<1, dim>>       node_grads;
       std::vector<unsigned int>         shape_component;
       std::vector<unsigned int>         shape_node;
+      std::vector<unsigned int>         node_shape;
       std::vector<double>               local_u;
       std::vector<double>               gT;
       std::vector<double>               AGt;
@@ -82,21 +105,23 @@ namespace Signorini
      * loops unroll), else 0.
      */
     template <int dim, unsigned int N>
-    void
-    accumulate_hessian(const Tensor<4, dim> &A,
-                       const double          JxW,
-                       Scratch<dim>         &s)
+    inline __attribute__((always_inline)) void
+    hessian_kernel(const Tensor<4, dim> &A,
+                   const double          JxW,
+                   const unsigned int    n_nodes,
+                   const double *__restrict gT,
+                   double *__restrict AGt,
+                   double *__restrict Kt)
     {
-      const unsigned int n  = (N > 0 ? N : s.gT.size() / dim);
-      const double      *gT = s.gT.data();
+      const unsigned int n    = (N > 0 ? N : n_nodes);
       unsigned int       pair = 0;
       for (unsigned int cc = 0; cc < dim; ++cc)
         for (unsigned int dd = cc; dd < dim; ++dd, ++pair)
           {
-            double *const K = &s.Kt[pair * n * n];
+            double *const K = Kt + pair * n * n;
             for (unsigned int L = 0; L < dim; ++L)
               {
-                double *const AGL = &s.AGt[L * n];
+                double *const AGL = AGt + L * n;
                 for (unsigned int a = 0; a < n; ++a)
                   AGL[a] = 0.;
                 for (unsigned int JJ = 0; JJ < dim; ++JJ)
@@ -117,6 +142,146 @@ namespace Signorini
               }
           }
     }
+
+    // The same loops compiled for AVX (4 doubles per instruction; no FMA,
+    // so every product and sum is rounded as in the default build and the
+    // results are identical), chosen at run time where the processor has
+    // it.
+    template <int dim, unsigned int N>
+    __attribute__((target("avx"))) void
+    hessian_kernel_avx(const Tensor<4, dim> &A,
+                       const double          JxW,
+                       const unsigned int    n_nodes,
+                       const double         *gT,
+                       double               *AGt,
+                       double               *Kt)
+    {
+      hessian_kernel<dim, N>(A, JxW, n_nodes, gT, AGt, Kt);
+    }
+
+    template <int dim, unsigned int N>
+    void
+    hessian_kernel_default(const Tensor<4, dim> &A,
+                           const double          JxW,
+                           const unsigned int    n_nodes,
+                           const double         *gT,
+                           double               *AGt,
+                           double               *Kt)
+    {
+      hessian_kernel<dim, N>(A, JxW, n_nodes, gT, AGt, Kt);
+    }
+
+    template <int dim, unsigned int N>
+    void
+    accumulate_hessian(const Tensor<4, dim> &A,
+                       const double          JxW,
+                       Scratch<dim>         &s)
+    {
+      static const bool avx = __builtin_cpu_supports("avx");
+      const unsigned int n_nodes = s.gT.size() / dim;
+      if (avx)
+        hessian_kernel_avx<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
+                                   s.Kt.data());
+      else
+        hessian_kernel_default<dim, N>(A, JxW, n_nodes, s.gT.data(),
+                                       s.AGt.data(), s.Kt.data());
+    }
+
+    /**
+     * Adds a cell's local matrix and vector straight into the locally
+     * owned rows of the Trilinos matrix and vector, for a cell none of
+     * whose DoFs is constrained and all of whose DoFs are locally owned
+     * (all but the cells at Dirichlet boundaries, hanging nodes and
+     * partition boundaries). The columns of each row are found by one
+     * merge of the cell's sorted local column indices with the row's
+     * sorted indices, instead of AffineConstraints::
+     * distribute_local_to_global's row lists and Epetra's global-to-local
+     * lookup and binary search per entry. Each entry receives the same
+     * values in the same cell order, so the sums are identical. Any other
+     * cell returns false and takes the general path.
+     */
+    class DirectScatter
+    {
+    public:
+      DirectScatter(const AffineConstraints<double> &constraints,
+                    const IndexSet                  &owned,
+                    MatrixType                      *matrix,
+                    VectorType                      *vector)
+        : constraints(constraints)
+        , owned(owned)
+        , matrix(matrix != nullptr && matrix->trilinos_matrix().Filled() ?
+                   &matrix->trilinos_matrix() :
+                   nullptr)
+        , vector(vector)
+      {}
+
+      bool
+      add(const Copy &c)
+      {
+        if (matrix == nullptr || vector == nullptr)
+          return false;
+        const unsigned int n = c.dofs.size();
+        for (const types::global_dof_index dof : c.dofs)
+          if (!owned.is_element(dof) || constraints.is_constrained(dof))
+            return false;
+        columns.resize(n);
+        order.resize(n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            columns[k] = matrix->LCID(
+              static_cast<TrilinosWrappers::types::int_type>(c.dofs[k]));
+            if (columns[k] < 0)
+              return false;
+            order[k] = k;
+          }
+        std::sort(order.begin(), order.end(),
+                  [this](const unsigned int a, const unsigned int b) {
+                    return columns[a] < columns[b];
+                  });
+        Epetra_FEVector &v      = vector->trilinos_vector();
+        double          *values = v[0];
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto gid =
+              static_cast<TrilinosWrappers::types::int_type>(c.dofs[i]);
+            const int row = matrix->LRID(gid);
+            int       n_entries;
+            double   *row_values;
+            int      *row_columns;
+            AssertThrow(row >= 0 && matrix->ExtractMyRowView(row, n_entries,
+                                                             row_values,
+                                                             row_columns) == 0,
+                        ExcMessage("Hessian row of DoF " +
+                                   std::to_string(c.dofs[i]) +
+                                   " is not locally stored"));
+            int p = 0;
+            for (unsigned int kk = 0; kk < n; ++kk)
+              {
+                const unsigned int k = order[kk];
+                while (p < n_entries && row_columns[p] < columns[k])
+                  ++p;
+                AssertThrow(p < n_entries && row_columns[p] == columns[k],
+                            ExcMessage("the Hessian's sparsity pattern has no "
+                                       "entry (" +
+                                       std::to_string(c.dofs[i]) + ", " +
+                                       std::to_string(c.dofs[k]) + ")"));
+                row_values[p] += c.matrix(i, k);
+              }
+            const int entry = v.Map().LID(gid);
+            AssertThrow(entry >= 0, ExcInternalError());
+            values[entry] += c.rhs(i);
+          }
+        return true;
+      }
+
+    private:
+      const AffineConstraints<double> &constraints;
+      const IndexSet                  &owned;
+      const Epetra_CrsMatrix          *matrix;
+      VectorType                      *vector;
+      std::vector<int>                 columns;
+      std::vector<unsigned int>        order;
+    };
   } // namespace
 
   template <int dim>
@@ -180,18 +345,8 @@ namespace Signorini
                              std::to_string(cell->material_id())));
       const Material::Interface &material = *material_it->second;
 
-      // The element is FE_Q(p)^dim: shape function i is the scalar shape
-      // function of node shape_node[i] in component shape_component[i].
       const unsigned int n_nodes = dofs_per_cell / dim;
-      s.shape_grads.resize(dofs_per_cell);
-      s.shape_component.resize(dofs_per_cell);
-      s.shape_node.resize(dofs_per_cell);
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        {
-          const auto ci        = fe.system_to_component_index(i);
-          s.shape_component[i] = ci.first;
-          s.shape_node[i]      = ci.second;
-        }
+      s.node_grads.resize(n_nodes);
       s.local_u.resize(dofs_per_cell);
       u.extract_subvector_to(c.dofs.begin(), c.dofs.end(), s.local_u.begin());
       if (bc.has_body_force())
@@ -222,13 +377,12 @@ namespace Signorini
       f_ext.assign(want_gradient ? dofs_per_cell : 0, 0.);
       for (unsigned int q = 0; q < n_q; ++q)
         {
+          // The scalar gradients once per node (not per shape function).
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            s.node_grads[a] = s.fe_values.shape_grad(s.node_shape[a], q);
           Tensor<2, dim> F = unit_symmetric_tensor<dim>();
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              s.shape_grads[i] =
-                s.fe_values.shape_grad_component(i, q, s.shape_component[i]);
-              F[s.shape_component[i]] += s.local_u[i] * s.shape_grads[i];
-            }
+            F[s.shape_component[i]] += s.local_u[i] * s.node_grads[s.shape_node[i]];
           const double J = determinant(F);
           c.min_J        = std::min(c.min_J, J);
           if (!Material::evaluate(material, F, response, want_gradient) ||
@@ -250,7 +404,7 @@ namespace Signorini
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             {
               const unsigned int ci = s.shape_component[i];
-              f_int[i] += (response.P[ci] * s.shape_grads[i]) * JxW;
+              f_int[i] += (response.P[ci] * s.node_grads[s.shape_node[i]]) * JxW;
               if (bc.has_body_force())
                 f_ext[i] += s.loads[q][ci] *
                             s.fe_values.shape_value_component(i, q, ci) * JxW;
@@ -258,10 +412,9 @@ namespace Signorini
 
           if (!want_hessian)
             continue;
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            if (s.shape_component[i] == 0)
-              for (unsigned int L = 0; L < dim; ++L)
-                s.gT[L * n_nodes + s.shape_node[i]] = s.shape_grads[i][L];
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int L = 0; L < dim; ++L)
+              s.gT[L * n_nodes + a] = s.node_grads[a][L];
           if (n_nodes == (1u << dim))
             accumulate_hessian<dim, (1u << dim)>(response.A, JxW, s);
           else
@@ -329,8 +482,10 @@ namespace Signorini
             }
       };
 
-    Evaluation result;
-    double     force_sq = 0.;
+    Evaluation    result;
+    double        force_sq = 0.;
+    DirectScatter direct(constraints, dof_handler.locally_owned_dofs(),
+                         hessian, rhs);
     auto       copier   = [&](const Copy &c) {
       if (!c.active)
         return;
@@ -344,8 +499,11 @@ namespace Signorini
           return;
         }
       if (want_hessian)
-        constraints.distribute_local_to_global(c.matrix, c.rhs, c.dofs,
-                                               *hessian, *rhs);
+        {
+          if (!direct.add(c))
+            constraints.distribute_local_to_global(c.matrix, c.rhs, c.dofs,
+                                                   *hessian, *rhs);
+        }
       else if (want_gradient)
         constraints.distribute_local_to_global(c.rhs, c.dofs, *rhs);
     };
