@@ -129,7 +129,8 @@ namespace Signorini
       /**
        * Value, gradient and Hessian with respect to the n_variables
        * variables (x first, then face, then opposite vertices), by
-       * forward-mode automatic differentiation (nested Sacado DFad).
+       * forward-mode automatic differentiation (nested Sacado SFad, sized at
+       * compile time: no heap allocation).
        */
       double
       derivatives(const Point<dim>  &x,
