@@ -161,18 +161,6 @@ namespace Signorini
 
     template <int dim, unsigned int N>
     void
-    hessian_kernel_default(const Tensor<4, dim> &A,
-                           const double          JxW,
-                           const unsigned int    n_nodes,
-                           const double         *gT,
-                           double               *AGt,
-                           double               *Kt)
-    {
-      hessian_kernel<dim, N>(A, JxW, n_nodes, gT, AGt, Kt);
-    }
-
-    template <int dim, unsigned int N>
-    void
     accumulate_hessian(const Tensor<4, dim> &A,
                        const double          JxW,
                        Scratch<dim>         &s)
@@ -183,8 +171,8 @@ namespace Signorini
         hessian_kernel_avx<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
                                    s.Kt.data());
       else
-        hessian_kernel_default<dim, N>(A, JxW, n_nodes, s.gT.data(),
-                                       s.AGt.data(), s.Kt.data());
+        hessian_kernel<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
+                               s.Kt.data());
     }
 
     /**
