@@ -49,6 +49,7 @@ namespace Signorini
       unsigned int max_backtracks     = 30;
       double       initial_shift      = 1e-6;
       unsigned int max_shifts         = 8;
+      bool         inertia_test       = true;
       double       max_increment      = 0.1;
       double       increment_tolerance = 1e-14;
 
