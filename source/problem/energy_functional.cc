@@ -147,6 +147,8 @@ namespace Signorini
     // so every product and sum is rounded as in the default build and the
     // results are identical), chosen at run time where the processor has
     // it.
+#if defined(__GNUC__) && defined(__x86_64__)
+#  define SIGNORINI_AVX_KERNEL 1
     template <int dim, unsigned int N>
     __attribute__((target("avx"))) void
     hessian_kernel_avx(const Tensor<4, dim> &A,
@@ -158,6 +160,7 @@ namespace Signorini
     {
       hessian_kernel<dim, N>(A, JxW, n_nodes, gT, AGt, Kt);
     }
+#endif
 
     template <int dim, unsigned int N>
     void
@@ -165,14 +168,18 @@ namespace Signorini
                        const double          JxW,
                        Scratch<dim>         &s)
     {
-      static const bool avx = __builtin_cpu_supports("avx");
       const unsigned int n_nodes = s.gT.size() / dim;
+#ifdef SIGNORINI_AVX_KERNEL
+      static const bool avx = __builtin_cpu_supports("avx");
       if (avx)
-        hessian_kernel_avx<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
-                                   s.Kt.data());
-      else
-        hessian_kernel<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
-                               s.Kt.data());
+        {
+          hessian_kernel_avx<dim, N>(A, JxW, n_nodes, s.gT.data(),
+                                     s.AGt.data(), s.Kt.data());
+          return;
+        }
+#endif
+      hessian_kernel<dim, N>(A, JxW, n_nodes, s.gT.data(), s.AGt.data(),
+                             s.Kt.data());
     }
 
     /**
