@@ -19,29 +19,6 @@
 
 using RunOutput::verdict;
 
-namespace
-{
-  double
-  iterations(const std::string &folder)
-  {
-    return RunOutput::first_number(RunOutput::summary_numbers(folder + "/summary.json"),
-                                   "newton iterations");
-  }
-
-  bool
-  same_answer(const std::string &a, const std::string &b)
-  {
-    bool same = true;
-    for (const char *q : {"contact_force_y", "hertz_a", "hertz_p0"})
-      {
-        const double x = RunOutput::summary_quantity(a + "/summary.json", q);
-        const double y = RunOutput::summary_quantity(b + "/summary.json", q);
-        same &= std::isfinite(x) && std::abs(x - y) <= 1e-5 * std::abs(x);
-      }
-    return same;
-  }
-} // namespace
-
 int
 main()
 {
@@ -60,9 +37,11 @@ main()
       out << form << ": both runs converged: " << verdict(ran) << "\n";
       if (!ran)
         continue;
-      const double with = iterations(form + "_true"), without = iterations(form + "_false");
+      const double with    = RunOutput::newton_iterations(form + "_true");
+      const double without = RunOutput::newton_iterations(form + "_false");
       out << form << ": same answer with and without the inertia test (1e-5): "
-          << verdict(same_answer(form + "_true", form + "_false")) << "\n"
+          << verdict(RunOutput::same_hertz_answer(form + "_true", form + "_false", 1e-5))
+          << "\n"
           << form << ": at most 30 Newton iterations with it: "
           << verdict(with > 0. && with <= 30.) << "\n";
       if (form == "nodal")

@@ -186,6 +186,30 @@ namespace RunOutput
     return std::numeric_limits<double>::quiet_NaN();
   }
 
+  /// The total Newton iterations of the run in @p folder (NaN if its
+  /// summary.json has none).
+  inline double
+  newton_iterations(const std::string &folder)
+  {
+    return first_number(summary_numbers(folder + "/summary.json"), "newton iterations");
+  }
+
+  /// Whether the runs in @p a and @p b report the same contact force
+  /// (y), Hertz half-width a and peak pressure p0, to @p tolerance
+  /// relative.
+  inline bool
+  same_hertz_answer(const std::string &a, const std::string &b, const double tolerance)
+  {
+    bool same = true;
+    for (const char *q : {"contact_force_y", "hertz_a", "hertz_p0"})
+      {
+        const double x = summary_quantity(a + "/summary.json", q);
+        const double y = summary_quantity(b + "/summary.json", q);
+        same &= std::isfinite(x) && std::abs(x - y) <= tolerance * std::abs(x);
+      }
+    return same;
+  }
+
 #if defined(SIGNORINI_EXECUTABLE) && defined(SIGNORINI_SOURCE_DIR)
   /**
    * Run the committed scene prm/@p scene with @p edits appended (entries

@@ -30,26 +30,6 @@ namespace
     return "subsection Solver\n  subsection Penalty\n    set Stage predictor = " +
            which + "\n  end\nend\n";
   }
-
-  double
-  iterations(const std::string &folder)
-  {
-    return RunOutput::first_number(RunOutput::summary_numbers(folder + "/summary.json"),
-                                   "newton iterations");
-  }
-
-  bool
-  same_answer(const std::string &a, const std::string &b)
-  {
-    bool same = true;
-    for (const char *q : {"contact_force_y", "hertz_a", "hertz_p0"})
-      {
-        const double x = RunOutput::summary_quantity(a + "/summary.json", q);
-        const double y = RunOutput::summary_quantity(b + "/summary.json", q);
-        same &= std::isfinite(x) && std::abs(x - y) <= 1e-5 * std::abs(x);
-      }
-    return same;
-  }
 } // namespace
 
 int
@@ -73,19 +53,26 @@ main()
       if (!ran)
         continue;
       out << scene << ": tangent and none give the same answer to 1e-5: "
-          << verdict(same_answer(scene + "_tangent", scene + "_none")) << "\n"
+          << verdict(RunOutput::same_hertz_answer(scene + "_tangent", scene + "_none",
+                                                  1e-5))
+          << "\n"
           << scene << ": extrapolation and none give the same answer to 1e-5: "
-          << verdict(same_answer(scene + "_extrapolation", scene + "_none")) << "\n";
-      const double tangent = iterations(scene + "_tangent");
-      const double none    = iterations(scene + "_none");
+          << verdict(RunOutput::same_hertz_answer(scene + "_extrapolation",
+                                                  scene + "_none", 1e-5))
+          << "\n";
+      const double tangent = RunOutput::newton_iterations(scene + "_tangent");
+      const double none    = RunOutput::newton_iterations(scene + "_none");
       const double limit   = scene == "hertz_block" ? 0.9 : 1.;
       out << scene << ": tangent needs at most " << limit
           << " x the Newton iterations of none: "
           << verdict(tangent > 0. && tangent <= limit * none) << "\n";
       out << scene << ": loose intermediate stages give the answer of tight ones to 1e-5: "
-          << verdict(tight_ran && same_answer(scene + "_tangent", scene + "_tight"))
+          << verdict(tight_ran && RunOutput::same_hertz_answer(scene + "_tangent",
+                                                               scene + "_tight", 1e-5))
           << "\n"
           << scene << ": loose intermediate stages need no more Newton iterations: "
-          << verdict(tight_ran && tangent <= iterations(scene + "_tight")) << "\n";
+          << verdict(tight_ran &&
+                     tangent <= RunOutput::newton_iterations(scene + "_tight"))
+          << "\n";
     }
 }
