@@ -166,11 +166,12 @@ namespace Signorini
     // one, an indefinite Hessian's descent direction is taken as it is
     // (a material's own loss of convexity, e.g. near a limit load, is not
     // the contact term's).
-    VectorType exact_direction;
-    if (exact_descent)
-      exact_direction = d;
     if (objective.set_convexified(true))
       {
+        // Kept in case the convexified direction does not descend.
+        VectorType exact_direction;
+        if (exact_descent)
+          exact_direction = d;
         ++statistics.convexified_steps;
         progress << "      Hessian not positive definite: convexified contact "
                     "Hessian"
@@ -184,12 +185,14 @@ namespace Signorini
         objective.set_convexified(false);
         if (solve_for_descent())
           return true;
+        if (exact_descent)
+          {
+            d = exact_direction;
+            return true;
+          }
       }
-    if (exact_descent)
-      {
-        d = exact_direction;
-        return true;
-      }
+    else if (exact_descent)
+      return true;
 
     // Regularise: shift the diagonal by tau |H_ii|.
     ++statistics.regularized_steps;
