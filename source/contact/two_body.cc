@@ -7,7 +7,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
@@ -18,6 +18,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace Signorini
 {
@@ -27,33 +28,47 @@ namespace Signorini
     void
     project_to_positive_semidefinite(FullMatrix<double> &H)
     {
-      const unsigned int        n = H.m();
-      LAPACKFullMatrix<double> A(n, n);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
+      // LAPACK's dsyev (QR iteration on the tridiagonal form: every
+      // eigenpair at once) with its INFO checked. deal.II's
+      // compute_eigenvalues_symmetric calls dsyevx, which on failure prints
+      // "LAPACK error in syevx" and returns eigenvectors that did not
+      // converge (seen on SSNV104's pair Hessians).
+      const types::blas_int n = H.m();
+      std::vector<double>   a(n * n), lambda(n);
+      for (types::blas_int i = 0; i < n; ++i)
+        for (types::blas_int j = 0; j < n; ++j)
           {
-            A(i, j) = 0.5 * (H(i, j) + H(j, i));
-            if (!std::isfinite(A(i, j)))
+            a[i + j * n] = 0.5 * (H(i, j) + H(j, i));
+            if (!std::isfinite(a[i + j * n]))
               throw std::runtime_error(
                 "a pair Hessian to be projected has a non-finite entry (" +
                 std::to_string(i) + ", " + std::to_string(j) + ")");
           }
-      Vector<double>     lambda;
-      FullMatrix<double> V;
-      const double       big = std::numeric_limits<double>::max();
-      A.compute_eigenvalues_symmetric(-big, big, 0., lambda, V);
-      if (lambda.size() != n || !std::isfinite(lambda.l2_norm()))
-        throw std::runtime_error("LAPACK's symmetric eigensolver returned " +
-                                 std::to_string(lambda.size()) + " of " +
-                                 std::to_string(n) +
-                                 " eigenvalues, or non-finite ones, for a "
-                                 "pair Hessian");
+      const char      jobz = 'V', uplo = 'U';
+      types::blas_int info = 0, lwork = -1;
+      double          size = 0.;
+      syev(&jobz, &uplo, &n, a.data(), &n, lambda.data(), &size, &lwork, &info);
+      lwork = std::max<types::blas_int>(static_cast<types::blas_int>(size), 3 * n);
+      std::vector<double> work(lwork);
+      if (info == 0)
+        syev(&jobz, &uplo, &n, a.data(), &n, lambda.data(), work.data(), &lwork, &info);
+      if (info != 0)
+        throw std::runtime_error(
+          "LAPACK's symmetric eigensolver (dsyev) failed on a " + std::to_string(n) +
+          " x " + std::to_string(n) + " pair Hessian: " +
+          (info < 0 ? "argument " + std::to_string(-info) + " is invalid" :
+                      std::to_string(info) + " off-diagonal entries of its "
+                                             "tridiagonal form did not converge to zero"));
+      for (types::blas_int k = 0; k < n; ++k)
+        if (!std::isfinite(lambda[k]))
+          throw std::runtime_error("LAPACK's symmetric eigensolver (dsyev) returned a "
+                                   "non-finite eigenvalue for a pair Hessian");
       H = 0.;
-      for (unsigned int k = 0; k < lambda.size(); ++k)
-        if (lambda(k) > 0.)
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              H(i, j) += lambda(k) * V(i, k) * V(j, k);
+      for (types::blas_int k = 0; k < n; ++k)
+        if (lambda[k] > 0.)
+          for (types::blas_int i = 0; i < n; ++i)
+            for (types::blas_int j = 0; j < n; ++j)
+              H(i, j) += lambda[k] * a[i + k * n] * a[j + k * n];
     }
 
     void

@@ -30,8 +30,9 @@ namespace Signorini
      * sum_{lambda_k > 0} lambda_k v_k v_k^T (negative eigenvalues set to
      * zero), as projected Newton methods do with non-convex penalty terms.
      * Throws std::runtime_error with the reason if @p H has a non-finite
-     * entry or the eigensolver (LAPACK dsyevx) does not return all n
-     * finite eigenvalues; add_penalty() then ends the solve on every rank
+     * entry or the eigensolver (LAPACK dsyev, its INFO checked) fails or
+     * returns a non-finite eigenvalue; add_penalty() then ends the solve
+     * on every rank
      * with a SolveFailure that gives it.
      */
     void
