@@ -52,6 +52,7 @@ namespace Signorini
   void
   IpoptStep<dim>::write_summary(Json &summary) const
   {
+    StepSolver<dim>::write_summary(summary);
     if (derivative_test_errors >= 0)
       summary["ipopt derivative test errors"] = derivative_test_errors;
   }

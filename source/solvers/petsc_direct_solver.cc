@@ -53,6 +53,20 @@ namespace Signorini
       throw std::runtime_error(std::string("PETSc ") + what + " failed: " +
                                (text ? text : "error " + std::to_string(code)));
     }
+
+    /// Whether PETSc's options (PETSC_OPTIONS, the command line) chose
+    /// MUMPS' ordering before this program set it: asked once, before the
+    /// first analysis.
+    bool
+    ordering_from_command_line()
+    {
+      static const bool set = [] {
+        PetscBool has = PETSC_FALSE;
+        PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_7", &has);
+        return has == PETSC_TRUE;
+      }();
+      return set;
+    }
   } // namespace
 
   /// The PETSc objects of one sparsity pattern.
@@ -284,7 +298,17 @@ namespace Signorini
                       "PCFactorSetUpMatSolverType");
                 Mat F = nullptr;
                 check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-                check(MatMumpsSetIcntl(F, 7, mumps_ordering), "MUMPS ICNTL(7)");
+                // The ordering goes through PETSc's options: on one rank
+                // PETSc 3.18 sets ICNTL(7) = 7 (MUMPS' own choice) when it
+                // initialises MUMPS at the analysis, after this call, so
+                // MatMumpsSetIcntl(F, 7, ...) had no effect there (every
+                // choice was PORD: MUMPS' own pick); the options are read
+                // after that. One set in PETSC_OPTIONS wins.
+                if (!ordering_from_command_line())
+                  check(PetscOptionsSetValue(nullptr,
+                                             "-mat_mumps_icntl_7",
+                                             std::to_string(mumps_ordering).c_str()),
+                        "PetscOptionsSetValue");
                 check(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
                 check(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
                 check(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
@@ -310,6 +334,8 @@ namespace Signorini
                 PetscInt value = 0;
                 check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
                 negative = static_cast<int>(value);
+                check(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
+                ordering = static_cast<int>(value);
               }
             else
               negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;

@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/output/json.h>
 #include <signorini/solvers/interior_point_step.h>
 #include <signorini/solvers/ipopt_step.h>
 #include <signorini/solvers/newton_step.h>
@@ -24,6 +25,16 @@ namespace Signorini
     , progress(progress)
     , linear_solver(parameters.solver.linear)
   {}
+
+  template <int dim>
+  void
+  StepSolver<dim>::write_summary(Json &summary) const
+  {
+    // Only what a restarted run reports alike (the counts of analyses and
+    // factorisations start again at a restart, so they are not here).
+    if (const std::string ordering = linear_solver.ordering_used(); !ordering.empty())
+      summary["solver"]["ordering"] = ordering;
+  }
 
   namespace
   {

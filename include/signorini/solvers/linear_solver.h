@@ -143,6 +143,14 @@ namespace Signorini
     }
 
     /**
+     * The fill-reducing ordering MUMPS used in the last analysis of the
+     * PETSc_Mumps solver ("amd", "amf", "scotch", "pord", "qamd"), or ""
+     * (another solver, or no analysis yet).
+     */
+    std::string
+    ordering_used() const;
+
+    /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
      * failed; @p message says why.
      */

@@ -81,6 +81,17 @@ namespace Signorini
       return negative;
     }
 
+    /**
+     * The fill-reducing ordering MUMPS used in its last analysis (its
+     * INFOG(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 6 QAMD), or -1 (CHOLMOD, or
+     * no analysis yet).
+     */
+    int
+    ordering_used() const
+    {
+      return ordering;
+    }
+
     /// The name of the package and its factorisation, for summaries.
     static std::string
     name(Package package);
@@ -93,6 +104,7 @@ namespace Signorini
     unsigned int           n_symbolic = 0;
     unsigned int           n_numeric  = 0;
     int                    negative   = -1;
+    int                    ordering   = -1;
   };
 
   /// A hash of the locally owned rows' sparsity pattern (global column

@@ -79,12 +79,13 @@ namespace Signorini
       (void)block;
     }
 
-    /// The solver's top-level entries of summary.json.
+    /**
+     * The solver's top-level entries of summary.json. Here: the ordering
+     * MUMPS used (in "solver"); a solver with entries of its own calls
+     * this too.
+     */
     virtual void
-    write_summary(Json &summary) const
-    {
-      (void)summary;
-    }
+    write_summary(Json &summary) const;
 
     /// Quantities of the solver's own, reported with each step.
     virtual void
