@@ -449,7 +449,14 @@ namespace Signorini
                   barrier_slope += ds[k] / s[k];
                   z_plus = std::max(z_plus, std::abs(z[k] + dz[k]));
                 }
-            const double nu_trial = std::max(nu, 1.5 * max(z_plus));
+            // nu from this iteration's multiplier estimates alone (exact
+            // penalty: above every |z + dz|), not the largest of all
+            // iterations: one spurious estimate early on (4e5 against
+            // multipliers of 0.1 on SSNV187's corner, from a regularised
+            // step) kept nu at 6e5, which turned the round-off of |g - s|
+            // (1e-16 per node) into merit increases of 3e-11 against a
+            // slope of 6e-12, and the line search stalled at 1.9e-8 F.
+            const double nu_trial = 1.5 * max(z_plus);
             slope = -(rhs * d_raw) - mu * sum(barrier_slope) - nu_trial * violation;
             if (slope < 0. || variant == 2)
               {
