@@ -372,10 +372,6 @@ main()
            two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n  end\n",
                       "interior-point"),
            out);
-  run_case("interior_point_incompressible",
-           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Incompressible = true"},
-                  {"@EXTRA@", "subsection Solver\n  set Method = interior-point\nend"}}),
-           out);
   run_case("interior_point_zero_tolerance",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\n"
                               "  subsection Interior point\n    set Tolerance = 0\n"

@@ -9,7 +9,12 @@
 // - the iteration count stays within a bound (a pass/fail line, since the
 //   count itself may change with round-off);
 // - on 2 ranks (KLU instead of MUMPS, another partition) the quantities agree
-//   with 1 rank to 1e-8 relative.
+//   with 1 rank to 1e-8 relative;
+// - incompressible SSNV187 (prm/ssnv187_incompressible.prm: neo-Hookean,
+//   ELAS_HYPER with C20, Mooney-Rivlin; no contact, the J = 1 constraints
+//   by the augmented Lagrangian): the top displacement and the reaction as
+//   Ipopt's to 1e-6, the top displacement within 0.05% of the analytic
+//   value, and on 2 ranks as on 1 to 1e-8.
 
 #include "run_output.h"
 
@@ -145,6 +150,54 @@ main()
       out << c.name << ": iterations <= " << c.max_iterations << ": "
           << verdict(iterations <= c.max_iterations) << "\n";
     }
+
+  // Incompressible SSNV187: no contact, J = 1 per cell.
+  const std::string c20 = "subsection Body 1\n  subsection Material\n"
+                          "    set C10 = 0.1234\n    set C01 = 1.2345\n"
+                          "    set C20 = 0.456\n  end\nend\n"
+                          "subsection Postprocess\n  subsection Mean boundary displacement\n"
+                          "    set Reference value = -0.0709357\n  end\nend\n";
+  const std::string mooney_rivlin =
+    "subsection Body 1\n  subsection Material\n    set C10 = 0.709\n"
+    "    set C01 = 2.3456\n  end\nend\n"
+    "subsection Postprocess\n  subsection Mean boundary displacement\n"
+    "    set Reference value = -0.0340090\n  end\nend\n";
+  const std::vector<std::string> incompressible_quantities = {"top_uy",
+                                                              "reaction_y_boundary_2"};
+  for (const auto &[name, edits] : std::vector<std::pair<std::string, std::string>>{
+         {"incompressible_neo_hookean", ""},
+         {"incompressible_c20", c20},
+         {"incompressible_mooney_rivlin", mooney_rivlin}})
+    {
+      const std::string ip = name + "_interior_point", ipopt = name + "_ipopt";
+      const bool        ran =
+        RunOutput::run_scene(ip, "ssnv187_incompressible.prm",
+                             edits + method("interior-point")) == 0 &&
+        RunOutput::run_scene(ipopt, "ssnv187_incompressible.prm",
+                             edits + "subsection Solver\n  subsection Ipopt\n"
+                                     "    set Tolerance = 1e-12\n  end\nend\n") == 0;
+      out << name << ": both methods converged: " << verdict(ran) << "\n";
+      const double dq = quantity_difference(ip, ipopt, incompressible_quantities);
+      const double analytic =
+        std::abs(summary_quantity(ip + "/summary.json", "top_uy", "relative error"));
+      std::cerr << name << ": quantities " << dq << ", top_uy against analytic "
+                << analytic << ", iterations "
+                << summary_value(ip, "interior_point iterations") << "\n";
+      out << name << ": quantities as Ipopt's to 1e-6: " << verdict(dq <= 1e-6) << "\n";
+      out << name << ": top_uy within 0.05% of the analytic value: "
+          << verdict(analytic <= 5e-4) << "\n";
+    }
+  const bool incompressible_ranks =
+    RunOutput::run_scene("incompressible_two_ranks", "ssnv187_incompressible.prm",
+                         method("interior-point"), two_ranks) == 0;
+  const double incompressible_d =
+    quantity_difference("incompressible_two_ranks",
+                        "incompressible_neo_hookean_interior_point",
+                        incompressible_quantities);
+  std::cerr << "incompressible, 1 vs 2 ranks: " << incompressible_d << "\n";
+  out << "incompressible neo-Hookean on 2 ranks: converged, quantities as on 1 rank "
+         "to 1e-8: "
+      << verdict(incompressible_ranks && incompressible_d <= 1e-8) << "\n";
 
   // 2 ranks against 1.
   const bool ranks =

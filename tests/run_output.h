@@ -55,11 +55,14 @@ namespace RunOutput
   }
 
   /**
-   * The "value" of quantity @p name in the "quantities" block of a
-   * summary.json (NaN if the file or the quantity is missing).
+   * The "value" (or another numeric @p field, e.g. "relative error") of
+   * quantity @p name in the "quantities" block of a summary.json (NaN if
+   * the file or the quantity is missing).
    */
   inline double
-  summary_quantity(const std::string &summary_file, const std::string &name)
+  summary_quantity(const std::string &summary_file,
+                   const std::string &name,
+                   const std::string &field = "value")
   {
     std::ifstream     in(summary_file);
     std::stringstream buffer;
@@ -69,10 +72,11 @@ namespace RunOutput
     const auto        key   = text.find("\"" + name + "\"", block);
     if (block == std::string::npos || key == std::string::npos)
       return std::numeric_limits<double>::quiet_NaN();
-    const auto value = text.find("\"value\":", key);
+    const std::string tag   = "\"" + field + "\":";
+    const auto        value = text.find(tag, key);
     if (value == std::string::npos)
       return std::numeric_limits<double>::quiet_NaN();
-    return std::strtod(text.c_str() + value + 8, nullptr);
+    return std::strtod(text.c_str() + value + tag.size(), nullptr);
   }
 
   /**

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <type_traits>
 #include <limits>
 #include <sstream>
 
@@ -70,6 +71,25 @@ namespace Signorini
                       "12",
                       Patterns::Integer(0),
                       "Retries with a larger delta before the step fails.");
+    prm.declare_entry("Incompressibility weight",
+                      "100",
+                      Patterns::Double(0.),
+                      "Incompressible bodies: the J = 1 constraints c_K = "
+                      "int_K (J - 1) dV = 0 enter as an augmented Lagrangian "
+                      "sum_K y_K c_K + rho_K/2 c_K^2, rho_K = this * mu_K / "
+                      "|K| (mu_K: the small-strain shear modulus of the "
+                      "cell's material, |K| its volume); after each "
+                      "converged interior point solve y_K += rho_K c_K.");
+    prm.declare_entry("Incompressibility tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Incompressible bodies: the multiplier updates stop "
+                      "when every |c_K| / |K| is at most this.");
+    prm.declare_entry("Maximum multiplier updates",
+                      "30",
+                      Patterns::Integer(1),
+                      "Incompressible bodies: the load step fails if the "
+                      "tolerance is not met after this many updates.");
   }
 
   void
@@ -85,7 +105,14 @@ namespace Signorini
     max_backtracks         = prm.get_integer("Maximum backtracks");
     initial_regularization = prm.get_double("Initial regularization");
     max_regularizations    = prm.get_integer("Maximum regularizations");
+    incompressibility_weight    = prm.get_double("Incompressibility weight");
+    incompressibility_tolerance = prm.get_double("Incompressibility tolerance");
+    max_multiplier_updates      = prm.get_integer("Maximum multiplier updates");
     const std::string section = "Solver > Interior point > ";
+    if (!(incompressibility_weight > 0.))
+      throw InputError(section + "Incompressibility weight", "must be > 0");
+    if (!(incompressibility_tolerance > 0.))
+      throw InputError(section + "Incompressibility tolerance", "must be > 0");
     if (!(tolerance > 0.))
       throw InputError(section + "Tolerance", "must be > 0");
     if (!(initial_barrier > 0.))
@@ -118,6 +145,7 @@ namespace Signorini
                                      const MPI_Comm                   communicator)
   {
     contact          = &model;
+    configured       = true;
     const auto &list = model.contact_nodes_on_boundary().nodes();
     active.assign(list.size(), false);
     unsigned int count = 0;
@@ -136,6 +164,23 @@ namespace Signorini
   }
 
   template <int dim>
+  void
+  InteriorPointMinimizer<dim>::setup_without_constraints(const double   h,
+                                                         const MPI_Comm communicator)
+  {
+    (void)communicator;
+    contact               = nullptr;
+    configured            = true;
+    h_without_constraints = h;
+    active.clear();
+    z.clear();
+    n_constraints       = 0;
+    warm                = false;
+    mu_last             = 0.;
+    last_regularization = 0.;
+  }
+
+  template <int dim>
   typename InteriorPointMinimizer<dim>::Statistics
   InteriorPointMinimizer<dim>::minimize(Objective                       &objective,
                                         const AffineConstraints<double> &constraints,
@@ -145,12 +190,15 @@ namespace Signorini
                                         VectorType                      &rhs)
   {
     Statistics stats;
-    AssertThrow(contact != nullptr, ExcMessage("setup() was not called"));
-    const MPI_Comm comm  = u.get_mpi_communicator();
-    const auto    &nodes = contact->contact_nodes_on_boundary().nodes();
+    AssertThrow(configured, ExcMessage("setup() was not called"));
+    const MPI_Comm comm = u.get_mpi_communicator();
+    static const std::remove_reference_t<
+      decltype(contact->contact_nodes_on_boundary().nodes())>
+                   no_nodes;
+    const auto    &nodes = contact ? contact->contact_nodes_on_boundary().nodes() : no_nodes;
     const unsigned int n = nodes.size();
     const double   m     = std::max(1u, n_constraints);
-    const double   h     = contact->min_mesh_size();
+    const double   h     = contact ? contact->min_mesh_size() : h_without_constraints;
 
     auto sum = [comm](const double x) { return Utilities::MPI::sum(x, comm); };
     auto max = [comm](const double x) { return Utilities::MPI::max(x, comm); };

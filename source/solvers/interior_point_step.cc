@@ -1,4 +1,13 @@
+#include <signorini/problem/incompressibility_lagrangian.h>
 #include <signorini/solvers/interior_point_step.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 namespace Signorini
 {
@@ -17,11 +26,36 @@ namespace Signorini
   InteriorPointStep<dim>::setup()
   {
     StepSolver<dim>::setup();
-    AssertThrow(this->problem.contact && this->problem.contact->has_constraints(),
-                ExcMessage("the interior point method needs node-wise constraints"));
-    minimizer.setup(*this->problem.contact,
-                    this->scene.homogeneous_constraints,
-                    this->scene.dof_handler.get_communicator());
+    const auto &problem = this->problem;
+    const auto &scene   = this->scene;
+    const MPI_Comm comm = scene.dof_handler.get_communicator();
+    if (problem.contact && problem.contact->has_constraints())
+      minimizer.setup(*problem.contact, scene.homogeneous_constraints, comm);
+    else
+      {
+        AssertThrow(problem.incompressibility,
+                    ExcMessage("the interior point method needs node-wise "
+                               "constraints or incompressible bodies"));
+        double h = std::numeric_limits<double>::max();
+        for (const auto &cell : scene.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            h = std::min(h, cell->minimum_vertex_distance());
+        minimizer.setup_without_constraints(Utilities::MPI::min(h, comm), comm);
+      }
+    y.clear();
+    rho.clear();
+    volume.clear();
+    if (problem.incompressibility)
+      for (const auto &cell : problem.incompressibility->cells())
+        {
+          const auto material = scene.materials.find(cell->material_id());
+          AssertThrow(material != scene.materials.end(),
+                      ExcMessage("no material for an incompressible cell"));
+          volume.push_back(cell->measure());
+          rho.push_back(this->parameters.solver.interior_point.incompressibility_weight *
+                        material->second->small_strain_lame().first / volume.back());
+          y.push_back(0.);
+        }
     minimizer.set_step_limits(this->parameters.solver.newton.max_increment *
                                 this->scene.size,
                               this->parameters.solver.newton.increment_tolerance *
@@ -40,14 +74,65 @@ namespace Signorini
     const AffineConstraints<double> target = scene.boundary_constraints(time, false);
     target.distribute(scene.solution);
     EnergyObjective<dim> objective(*this->problem.energy, time);
-    stats = minimizer.minimize(objective, scene.homogeneous_constraints,
-                               scene.solution, scene.solution_ghosted,
-                               scene.hessian, scene.rhs);
+    const auto *incompressibility = this->problem.incompressibility.get();
+    if (!incompressibility)
+      stats = minimizer.minimize(objective, scene.homogeneous_constraints,
+                                 scene.solution, scene.solution_ghosted,
+                                 scene.hessian, scene.rhs);
+    else
+      {
+        // The augmented Lagrangian of the J = 1 constraints, its
+        // multipliers updated after each converged solve (warm: the last
+        // load step's multipliers are the first guess).
+        const auto &p     = this->parameters.solver.interior_point;
+        const auto &cells = incompressibility->cells();
+        const MPI_Comm comm = scene.dof_handler.get_communicator();
+        unsigned int   iterations = 0;
+        std::vector<double> c(cells.size(), 0.);
+        for (unsigned int update = 0;; ++update)
+          {
+            IncompressibilityLagrangian<dim> lagrangian(objective, *incompressibility, y, rho);
+            stats = minimizer.minimize(lagrangian, scene.homogeneous_constraints,
+                                       scene.solution, scene.solution_ghosted,
+                                       scene.hessian, scene.rhs);
+            iterations += stats.iterations;
+            if (!stats.converged)
+              break;
+            scene.solution_ghosted = scene.solution;
+            double worst = 0.;
+            for (unsigned int k = 0; k < cells.size(); ++k)
+              {
+                c[k]  = incompressibility->evaluate(cells[k], scene.solution_ghosted,
+                                                    nullptr, nullptr);
+                worst = std::max(worst, std::abs(c[k]) / volume[k]);
+              }
+            worst = Utilities::MPI::max(worst, comm);
+            this->progress << "    multiplier update " << update
+                           << ": max |c_K|/|K| = " << std::scientific
+                           << std::setprecision(3) << worst << std::endl;
+            if (worst <= p.incompressibility_tolerance)
+              break;
+            if (update + 1 >= p.max_multiplier_updates)
+              {
+                stats.converged = false;
+                std::ostringstream reason;
+                reason << "the J = 1 constraints are not met after "
+                       << p.max_multiplier_updates
+                       << " multiplier updates (max |c_K|/|K| = " << worst << ")";
+                stats.reason = reason.str();
+                break;
+              }
+            for (unsigned int k = 0; k < cells.size(); ++k)
+              y[k] += rho[k] * c[k];
+          }
+        stats.iterations = iterations;
+      }
     scene.solution_ghosted = scene.solution;
     record.solver_status   = stats.converged ? "converged" : stats.reason;
     if (!stats.converged)
       return false;
-    this->problem.contact->forces() = minimizer.multipliers();
+    if (this->problem.contact)
+      this->problem.contact->forces() = minimizer.multipliers();
     return true;
   }
 

@@ -229,12 +229,15 @@ namespace Signorini
       throw InputError("Solver > Method",
                        "newton-penalty needs contact (Contact > Type); the "
                        "scene declares none: use newton");
-    if (!p.incompressible_ids().empty() && m != Method::ipopt)
+    const bool incompressible = !p.incompressible_ids().empty();
+    if (incompressible && m != Method::ipopt && m != Method::interior_point)
       throw InputError("Body 1 > Material > Incompressible",
-                       "J = 1 constraints need Solver > Method = ipopt, not " +
+                       "J = 1 constraints need Solver > Method = ipopt or "
+                       "interior-point, not " +
                          method);
     if (m == Method::interior_point &&
-        p.contact.type != Parameters::Contact::Type::rigid_foundation)
+        p.contact.type != Parameters::Contact::Type::rigid_foundation &&
+        !(incompressible && !contact))
       throw InputError("Solver > Method",
                        "interior-point handles the node-wise constraints of "
                        "Contact > Type = rigid foundation, and this scene has "

@@ -31,6 +31,10 @@ namespace Signorini
     unsigned int max_backtracks         = 30;
     double       initial_regularization = 1e-8;
     unsigned int max_regularizations    = 12;
+    // Incompressible bodies (augmented Lagrangian, InteriorPointStep).
+    double       incompressibility_weight    = 100.;
+    double       incompressibility_tolerance = 1e-10;
+    unsigned int max_multiplier_updates      = 30;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -110,6 +114,16 @@ namespace Signorini
           const AffineConstraints<double> &constraints,
           const MPI_Comm                   communicator);
 
+    /**
+     * No node-wise constraints (a scene without contact whose objective
+     * carries its equality constraints itself, e.g. incompressibility by
+     * an augmented Lagrangian): the iteration is Newton's with the merit
+     * line search. @p h is the length scale of the step tests (the
+     * smallest cell size).
+     */
+    void
+    setup_without_constraints(const double h, const MPI_Comm communicator);
+
     /// No DoF moves by more than @p limit in one step (0: no limit). A
     /// step of at most @p increment_tolerance in every DoF, with the
     /// constraints and complementarity met, ends the iteration as converged
@@ -168,6 +182,8 @@ namespace Signorini
     double              increment_limit = 0.;
 
     const Contact::Model<dim> *contact = nullptr;
+    bool                       configured = false;
+    double                     h_without_constraints = 0.;
     std::vector<bool>          active; // the node carries a constraint
     unsigned int               n_constraints = 0; // over all ranks
 

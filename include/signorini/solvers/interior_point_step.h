@@ -3,6 +3,8 @@
 #include <signorini/solvers/interior_point.h>
 #include <signorini/solvers/step_solver.h>
 
+#include <vector>
+
 namespace Signorini
 {
   /**
@@ -44,5 +46,8 @@ namespace Signorini
 
   private:
     InteriorPointMinimizer<dim> minimizer;
+    // Incompressible bodies: one multiplier, weight and volume per
+    // constrained cell of this rank (Incompressibility::cells() order).
+    std::vector<double> y, rho, volume;
   };
 } // namespace Signorini
