@@ -5,7 +5,8 @@
 // stopped:
 // - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks;
 // - Ipopt with the rigid foundation's constraints (warm-started multipliers);
-// - the interior point method (the same, on 1 and 2 ranks);
+// - the interior point method (the same, on 1 and 2 ranks), also with
+//   incompressible bodies (the augmented Lagrangian's multipliers);
 // - adaptive refinement cycles, restarted in the load path and in a cycle.
 // Writing checkpoints does not change the run. Bad restarts exit 2 with a
 // message: a changed mesh entry, another number of ranks, no checkpoint.
@@ -117,6 +118,11 @@ main()
   check_scene(out, "interior_point", "default.prm", interior_point, {1, 3});
   check_scene(out, "interior_point_ranks", "default.prm", interior_point + klu,
               {2}, mpirun);
+  // The same with incompressible bodies: the augmented Lagrangian's
+  // multipliers carried across steps and through the checkpoint.
+  check_scene(out, "incompressible", "ssnv187_incompressible.prm",
+              four_steps + "subsection Solver\n  set Method = interior-point\nend\n",
+              {1});
   // Refinement cycles: checkpoints in the load path (0: after step 1),
   // after cycle 0 is recorded (2), on cycle 1's mesh before its solve (3)
   // and after it (4).

@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/problem/incompressibility_lagrangian.h>
 #include <signorini/solvers/interior_point_step.h>
 
@@ -141,6 +142,8 @@ namespace Signorini
   InteriorPointStep<dim>::save_state(OutputArchive &archive) const
   {
     minimizer.save_state(archive);
+    // The incompressibility multipliers start the next load step.
+    archive << y;
   }
 
   template <int dim>
@@ -148,6 +151,10 @@ namespace Signorini
   InteriorPointStep<dim>::load_state(InputArchive &archive)
   {
     minimizer.load_state(archive);
+    std::vector<double> saved;
+    archive >> saved;
+    if (saved.size() == y.size())
+      y = saved;
   }
 
   template class InteriorPointStep<2>;
