@@ -33,10 +33,10 @@ namespace Signorini
     double       penetration_tolerance = 1e-3;
     double       target_fraction       = 0.5;
     double       min_growth            = 4.;
-    double       max_growth            = 1e4;
+    double       max_growth            = 1e3;
     unsigned int max_stages            = 20;
     bool         restart_each_step     = false;
-    double       step_reduction        = 1e4;
+    double       step_reduction        = 10;
     double       max_penalty_ratio     = 1e14; // cap of mu / mu_0
     unsigned int stage_iteration_target = 20;
     unsigned int max_stage_retries      = 3;
