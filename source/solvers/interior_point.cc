@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <type_traits>
 #include <limits>
 #include <sstream>
 
@@ -165,10 +164,8 @@ namespace Signorini
 
   template <int dim>
   void
-  InteriorPointMinimizer<dim>::setup_without_constraints(const double   h,
-                                                         const MPI_Comm communicator)
+  InteriorPointMinimizer<dim>::setup_without_constraints(const double h)
   {
-    (void)communicator;
     contact               = nullptr;
     configured            = true;
     h_without_constraints = h;
@@ -192,10 +189,8 @@ namespace Signorini
     Statistics stats;
     AssertThrow(configured, ExcMessage("setup() was not called"));
     const MPI_Comm comm = u.get_mpi_communicator();
-    static const std::remove_reference_t<
-      decltype(contact->contact_nodes_on_boundary().nodes())>
-                   no_nodes;
-    const auto    &nodes = contact ? contact->contact_nodes_on_boundary().nodes() : no_nodes;
+    static const std::vector<Contact::BoundaryNode<dim>> no_nodes;
+    const auto &nodes = contact ? contact->contact_nodes_on_boundary().nodes() : no_nodes;
     const unsigned int n = nodes.size();
     const double   m     = std::max(1u, n_constraints);
     const double   h     = contact ? contact->min_mesh_size() : h_without_constraints;

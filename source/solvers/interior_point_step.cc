@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace Signorini
@@ -29,19 +28,15 @@ namespace Signorini
     StepSolver<dim>::setup();
     const auto &problem = this->problem;
     const auto &scene   = this->scene;
-    const MPI_Comm comm = scene.dof_handler.get_communicator();
     if (problem.contact && problem.contact->has_constraints())
-      minimizer.setup(*problem.contact, scene.homogeneous_constraints, comm);
+      minimizer.setup(*problem.contact, scene.homogeneous_constraints,
+                      scene.dof_handler.get_communicator());
     else
       {
         AssertThrow(problem.incompressibility,
                     ExcMessage("the interior point method needs node-wise "
                                "constraints or incompressible bodies"));
-        double h = std::numeric_limits<double>::max();
-        for (const auto &cell : scene.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            h = std::min(h, cell->minimum_vertex_distance());
-        minimizer.setup_without_constraints(Utilities::MPI::min(h, comm), comm);
+        minimizer.setup_without_constraints(scene.h_min);
       }
     y.clear();
     rho.clear();

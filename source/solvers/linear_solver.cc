@@ -20,9 +20,18 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <utility>
 
 namespace Signorini
 {
+  namespace
+  {
+    /// The MUMPS orderings by name ('MUMPS ordering') and ICNTL(7) /
+    /// INFOG(7) code.
+    constexpr std::pair<const char *, int> mumps_orderings[] = {
+      {"amd", 0}, {"amf", 2}, {"scotch", 3}, {"pord", 4}, {"qamd", 6}};
+  } // namespace
+
   void
   LinearSolver::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -141,12 +150,10 @@ namespace Signorini
                          " ranks: use PETSc_Mumps, Amesos_Mumps, Amesos_Klu "
                          "or auto");
     const std::string ordering = prm.get("MUMPS ordering");
-    mumps_ordering = (ordering == "amd"    ? 0 :
-                      ordering == "amf"    ? 2 :
-                      ordering == "scotch" ? 3 :
-                      ordering == "pord"   ? 4 :
-                      ordering == "qamd"   ? 6 :
-                                             7);
+    mumps_ordering             = 7; // auto: MUMPS' own choice
+    for (const auto &[name, code] : mumps_orderings)
+      if (ordering == name)
+        mumps_ordering = code;
     relative_tolerance    = prm.get_double("Relative tolerance");
     max_iterations        = prm.get_integer("Maximum iterations");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
@@ -202,21 +209,11 @@ namespace Signorini
   std::string
   LinearSolver::ordering_used() const
   {
-    switch (direct.petsc ? direct.petsc->ordering_used() : -1)
-      {
-        case 0:
-          return "amd";
-        case 2:
-          return "amf";
-        case 3:
-          return "scotch";
-        case 4:
-          return "pord";
-        case 6:
-          return "qamd";
-        default:
-          return "";
-      }
+    const int used = direct.petsc ? direct.petsc->ordering_used() : -1;
+    for (const auto &[name, code] : mumps_orderings)
+      if (used == code)
+        return name;
+    return "";
   }
 
   unsigned int

@@ -302,8 +302,9 @@ namespace Signorini
                 // PETSc 3.18 sets ICNTL(7) = 7 (MUMPS' own choice) when it
                 // initialises MUMPS at the analysis, after this call, so
                 // MatMumpsSetIcntl(F, 7, ...) had no effect there (every
-                // choice was PORD: MUMPS' own pick); the options are read
-                // after that. One set in PETSC_OPTIONS wins.
+                // choice gave MUMPS' own pick: AMF for small matrices, PORD
+                // for large ones); the options are read after that. One set
+                // in PETSC_OPTIONS wins.
                 if (!ordering_from_command_line())
                   check(PetscOptionsSetValue(nullptr,
                                              "-mat_mumps_icntl_7",

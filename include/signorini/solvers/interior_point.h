@@ -122,7 +122,7 @@ namespace Signorini
      * smallest cell size).
      */
     void
-    setup_without_constraints(const double h, const MPI_Comm communicator);
+    setup_without_constraints(const double h);
 
     /// No DoF moves by more than @p limit in one step (0: no limit). A
     /// step of at most @p increment_tolerance in every DoF, with the
