@@ -2,10 +2,14 @@
 // gradient against central differences of E along random directions, and
 // the Hessian times a direction against central differences of the
 // gradient, for Q1 and Q2, 2D and 3D, with a traction and a body force
-// that depend on position and time, on a mildly distorted mesh.
+// that depend on position and time, on a mildly distorted mesh. The same
+// for the augmented Lagrangian of the J = 1 constraints that the interior
+// point method minimises (IncompressibilityLagrangian: the energy plus
+// sum_K y_K c_K + rho_K/2 c_K^2, random multipliers and weights).
 
 #include <signorini/scene/boundary_conditions.h>
 #include <signorini/problem/energy_functional.h>
+#include <signorini/problem/incompressibility_lagrangian.h>
 #include <signorini/material/invariant_based.h>
 #include <signorini/material/laws.h>
 
@@ -21,6 +25,8 @@
 
 #include <fstream>
 #include <random>
+#include <utility>
+#include <vector>
 
 using namespace dealii;
 using namespace Signorini;
@@ -84,35 +90,43 @@ check(const unsigned int degree, std::ostream &out)
   const double     t = 0.7;
   const VectorType u = random_vector(0.05);
   VectorType       rhs(owned, comm);
-  const Evaluation e = energy.evaluate(ghosted(u), t, none, &rhs, &H);
-  AssertThrow(e.admissible, ExcInternalError());
 
-  double worst_gradient = 0., worst_hessian = 0.;
-  const double h = 1e-6;
-  for (unsigned int trial = 0; trial < 3; ++trial)
-    {
-      const VectorType v = random_vector(1.);
-      VectorType       up(u), um(u);
-      up.add(h, v);
-      um.add(-h, v);
-      VectorType       rp(owned, comm), rm(owned, comm);
-      const Evaluation ep = energy.evaluate(ghosted(up), t, none, &rp, nullptr);
-      const Evaluation em = energy.evaluate(ghosted(um), t, none, &rm, nullptr);
+  // Largest relative errors of the gradient and of the Hessian times a
+  // direction of @p objective at u against central differences.
+  auto fd_check = [&](Objective &objective) {
+    const Evaluation e = objective.evaluate(ghosted(u), none, &rhs, &H);
+    AssertThrow(e.admissible, ExcInternalError());
+    double       worst_gradient = 0., worst_hessian = 0.;
+    const double h = 1e-6;
+    for (unsigned int trial = 0; trial < 3; ++trial)
+      {
+        const VectorType v = random_vector(1.);
+        VectorType       up(u), um(u);
+        up.add(h, v);
+        um.add(-h, v);
+        VectorType       rp(owned, comm), rm(owned, comm);
+        const Evaluation ep = objective.evaluate(ghosted(up), none, &rp, nullptr);
+        const Evaluation em = objective.evaluate(ghosted(um), none, &rm, nullptr);
 
-      const double directional = -(rhs * v);
-      const double fd          = (ep.value - em.value) / (2 * h);
-      worst_gradient =
-        std::max(worst_gradient, std::abs(fd - directional) / std::abs(directional));
+        const double directional = -(rhs * v);
+        const double fd          = (ep.value - em.value) / (2 * h);
+        worst_gradient =
+          std::max(worst_gradient, std::abs(fd - directional) / std::abs(directional));
 
-      VectorType Hv(owned, comm);
-      H.vmult(Hv, v);
-      VectorType fd_Hv(rm); // -(g(u+hv) - g(u-hv)) / 2h = (rm - rp)/2h... with rhs = -g
-      fd_Hv.add(-1., rp);
-      fd_Hv /= (2 * h);
-      VectorType diff(Hv);
-      diff -= fd_Hv;
-      worst_hessian = std::max(worst_hessian, diff.l2_norm() / Hv.l2_norm());
-    }
+        VectorType Hv(owned, comm);
+        H.vmult(Hv, v);
+        VectorType fd_Hv(rm); // -(g(u+hv) - g(u-hv)) / 2h = (rm - rp)/2h... with rhs = -g
+        fd_Hv.add(-1., rp);
+        fd_Hv /= (2 * h);
+        VectorType diff(Hv);
+        diff -= fd_Hv;
+        worst_hessian = std::max(worst_hessian, diff.l2_norm() / Hv.l2_norm());
+      }
+    return std::make_pair(worst_gradient, worst_hessian);
+  };
+
+  EnergyObjective<dim> objective(energy, t);
+  const auto [worst_gradient, worst_hessian] = fd_check(objective);
   out << dim << "D Q" << degree << " (" << dof.n_dofs() << " dofs): gradient vs FD "
       << (worst_gradient < 1e-7 ? "ok" : "FAIL") << ", Hessian vs FD "
       << (worst_hessian < 1e-6 ? "ok" : "FAIL") << ", Hessian symmetric ";
@@ -125,6 +139,24 @@ check(const unsigned int degree, std::ostream &out)
       << "\n";
   if (worst_gradient >= 1e-7 || worst_hessian >= 1e-6)
     std::cerr << "errors " << worst_gradient << " " << worst_hessian << "\n";
+
+  // The augmented Lagrangian of J = 1 per cell, multipliers and weights of
+  // the size of the energy's terms.
+  Incompressibility<dim> incompressibility(dof, mapping, {0});
+  const unsigned int     n_cells = incompressibility.cells().size();
+  std::vector<double>    y(n_cells), rho(n_cells);
+  for (unsigned int k = 0; k < n_cells; ++k)
+    {
+      y[k]   = uniform(rng);
+      rho[k] = 10. * (1.5 + uniform(rng));
+    }
+  IncompressibilityLagrangian<dim> lagrangian(objective, incompressibility, y, rho);
+  const auto [lagrangian_gradient, lagrangian_hessian] = fd_check(lagrangian);
+  out << dim << "D Q" << degree << " augmented Lagrangian of J = 1: gradient vs FD "
+      << (lagrangian_gradient < 1e-7 ? "ok" : "FAIL") << ", Hessian vs FD "
+      << (lagrangian_hessian < 1e-6 ? "ok" : "FAIL") << "\n";
+  std::cerr << dim << "D Q" << degree << " augmented Lagrangian: errors "
+            << lagrangian_gradient << " " << lagrangian_hessian << "\n";
 }
 
 int
