@@ -7,9 +7,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/meshworker/mesh_loop.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_FEVector.h>
-
 #include <algorithm>
 
 namespace Signorini
@@ -21,12 +18,14 @@ namespace Signorini
     {
       Scratch(const Mapping<dim>       &mapping,
               const FiniteElement<dim> &fe,
-              const bool                with_faces)
+              const bool                with_faces,
+              const bool                with_body_force)
         : fe_values(mapping,
                     fe,
                     QGauss<dim>(fe.degree + 1),
-                    update_values | update_gradients |
-                      update_quadrature_points | update_JxW_values)
+                    update_values | update_gradients | update_JxW_values |
+                      (with_body_force ? update_quadrature_points :
+                                         update_default))
         , fe_face_values(mapping,
                          fe,
                          QGauss<dim - 1>(fe.degree + 1),
@@ -34,6 +33,7 @@ namespace Signorini
                                        update_JxW_values) :
                                       update_default)
         , with_faces(with_faces)
+        , with_body_force(with_body_force)
       {
         // The element is FE_Q(p)^dim: shape function i is the scalar shape
         // function of node shape_node[i] in component shape_component[i];
@@ -51,23 +51,45 @@ namespace Signorini
             if (ci.first == 0)
               node_shape[ci.second] = i;
           }
+        // Where entry (i, j) of the local Hessian is in the node blocks
+        // Kt[p(c,d)][a][b] of the component pairs c <= d (see
+        // hessian_kernel), mirrored for c > d.
+        const unsigned int n_nodes = n / dim;
+        const auto pair_index = [](const unsigned int c, const unsigned int d) {
+          return c * dim - c * (c - 1) / 2 + (d - c);
+        };
+        block_entry.resize(n * n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const unsigned int ci = shape_component[i];
+              const unsigned int cj = shape_component[j];
+              const unsigned int a  = shape_node[i];
+              const unsigned int b  = shape_node[j];
+              block_entry[i * n + j] =
+                ci <= cj ? (pair_index(ci, cj) * n_nodes + a) * n_nodes + b :
+                           (pair_index(cj, ci) * n_nodes + b) * n_nodes + a;
+            }
       }
 
       Scratch(const Scratch &other)
         : Scratch(other.fe_values.get_mapping(),
                   other.fe_values.get_fe(),
-                  other.with_faces)
+                  other.with_faces,
+                  other.with_body_force)
       {}
 
       FEValues<dim>                     fe_values;
       FEFaceValues<dim>                 fe_face_values;
       bool                              with_faces;
+      bool                              with_body_force;
       std::vector<Tensor<1, dim>>       values;
       std::vector<Vector<double>>       loads;
       std::vector<Tensor<1, dim>>       node_grads;
       std::vector<unsigned int>         shape_component;
       std::vector<unsigned int>         shape_node;
       std::vector<unsigned int>         node_shape;
+      std::vector<unsigned int>         block_entry;
       std::vector<double>               local_u;
       std::vector<double>               gT;
       std::vector<double>               AGt;
@@ -78,9 +100,26 @@ namespace Signorini
 
     struct Copy
     {
+      Copy() = default;
+      Copy(const Copy &) = default;
+
+      /**
+       * mesh_loop assigns its empty sample to the copy object before each
+       * cell. The worker sizes and fills every buffer itself, so this
+       * assignment resets the scalars only and keeps the buffers' storage
+       * (no allocation per cell).
+       */
+      Copy &
+      operator=(const Copy &)
+      {
+        reset();
+        return *this;
+      }
+
       FullMatrix<double>                   matrix;
       Vector<double>                       rhs;
       std::vector<types::global_dof_index> dofs;
+      unsigned int                         cell_index    = 0;
       double                               strain_energy = 0.;
       double                               external_work = 0.;
       double                               force_sq      = 0.;
@@ -119,6 +158,7 @@ namespace Signorini
         for (unsigned int dd = cc; dd < dim; ++dd, ++pair)
           {
             double *const K = Kt + pair * n * n;
+            // AG[L][a] = JxW sum_J A[c][J][d][L] g_a[J]
             for (unsigned int L = 0; L < dim; ++L)
               {
                 double *const AGL = AGt + L * n;
@@ -131,13 +171,19 @@ namespace Signorini
                     for (unsigned int a = 0; a < n; ++a)
                       AGL[a] += w * gJ[a];
                   }
-                const double *gL = gT + L * n;
-                for (unsigned int a = 0; a < n; ++a)
+              }
+            // K[a][b] += AG[L][a] g_b[L], L = 0, 1, (2) in turn: each entry
+            // is loaded and stored once per quadrature point, and receives
+            // its terms in the same order (and roundings) as one pass per L
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                double *Ka = K + a * n;
+                for (unsigned int b = 0; b < n; ++b)
                   {
-                    const double x  = AGL[a];
-                    double      *Ka = K + a * n;
-                    for (unsigned int b = 0; b < n; ++b)
-                      Ka[b] += x * gL[b];
+                    double k = Ka[b];
+                    for (unsigned int L = 0; L < dim; ++L)
+                      k += AGt[L * n + a] * gT[L * n + b];
+                    Ka[b] = k;
                   }
               }
           }
@@ -182,101 +228,6 @@ namespace Signorini
                              s.Kt.data());
     }
 
-    /**
-     * Adds a cell's local matrix and vector straight into the locally
-     * owned rows of the Trilinos matrix and vector, for a cell none of
-     * whose DoFs is constrained and all of whose DoFs are locally owned
-     * (all but the cells at Dirichlet boundaries, hanging nodes and
-     * partition boundaries). The columns of each row are found by one
-     * merge of the cell's sorted local column indices with the row's
-     * sorted indices, instead of AffineConstraints::
-     * distribute_local_to_global's row lists and Epetra's global-to-local
-     * lookup and binary search per entry. Each entry receives the same
-     * values in the same cell order, so the sums are identical. Any other
-     * cell returns false and takes the general path.
-     */
-    class DirectScatter
-    {
-    public:
-      DirectScatter(const AffineConstraints<double> &constraints,
-                    const IndexSet                  &owned,
-                    MatrixType                      *matrix,
-                    VectorType                      *vector)
-        : constraints(constraints)
-        , owned(owned)
-        , matrix(matrix != nullptr && matrix->trilinos_matrix().Filled() ?
-                   &matrix->trilinos_matrix() :
-                   nullptr)
-        , vector(vector)
-      {}
-
-      bool
-      add(const Copy &c)
-      {
-        if (matrix == nullptr || vector == nullptr)
-          return false;
-        const unsigned int n = c.dofs.size();
-        for (const types::global_dof_index dof : c.dofs)
-          if (!owned.is_element(dof) || constraints.is_constrained(dof))
-            return false;
-        columns.resize(n);
-        order.resize(n);
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            columns[k] = matrix->LCID(
-              static_cast<TrilinosWrappers::types::int_type>(c.dofs[k]));
-            if (columns[k] < 0)
-              return false;
-            order[k] = k;
-          }
-        std::sort(order.begin(), order.end(),
-                  [this](const unsigned int a, const unsigned int b) {
-                    return columns[a] < columns[b];
-                  });
-        Epetra_FEVector &v      = vector->trilinos_vector();
-        double          *values = v[0];
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const auto gid =
-              static_cast<TrilinosWrappers::types::int_type>(c.dofs[i]);
-            const int row = matrix->LRID(gid);
-            int       n_entries;
-            double   *row_values;
-            int      *row_columns;
-            AssertThrow(row >= 0 && matrix->ExtractMyRowView(row, n_entries,
-                                                             row_values,
-                                                             row_columns) == 0,
-                        ExcMessage("Hessian row of DoF " +
-                                   std::to_string(c.dofs[i]) +
-                                   " is not locally stored"));
-            int p = 0;
-            for (unsigned int kk = 0; kk < n; ++kk)
-              {
-                const unsigned int k = order[kk];
-                while (p < n_entries && row_columns[p] < columns[k])
-                  ++p;
-                AssertThrow(p < n_entries && row_columns[p] == columns[k],
-                            ExcMessage("the Hessian's sparsity pattern has no "
-                                       "entry (" +
-                                       std::to_string(c.dofs[i]) + ", " +
-                                       std::to_string(c.dofs[k]) + ")"));
-                row_values[p] += c.matrix(i, k);
-              }
-            const int entry = v.Map().LID(gid);
-            AssertThrow(entry >= 0, ExcInternalError());
-            values[entry] += c.rhs(i);
-          }
-        return true;
-      }
-
-    private:
-      const AffineConstraints<double> &constraints;
-      const IndexSet                  &owned;
-      const Epetra_CrsMatrix          *matrix;
-      VectorType                      *vector;
-      std::vector<int>                 columns;
-      std::vector<unsigned int>        order;
-    };
   } // namespace
 
   template <int dim>
@@ -328,7 +279,8 @@ namespace Signorini
       c.reset(); // mesh_loop reuses one copy object per thread
       c.dofs.resize(dofs_per_cell);
       cell->get_dof_indices(c.dofs);
-      c.active = true;
+      c.cell_index = cell->active_cell_index();
+      c.active     = true;
       if (want_gradient)
         c.rhs.reinit(dofs_per_cell);
       if (want_hessian)
@@ -416,24 +368,9 @@ namespace Signorini
             accumulate_hessian<dim, 0>(response.A, JxW, s);
         }
       if (want_hessian)
-        {
-          // pair index of (c, d), c <= d, in the order of the loop above
-          auto pair_index = [](const unsigned int c, const unsigned int d) {
-            return c * dim - c * (c - 1) / 2 + (d - c);
-          };
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = 0; j < dofs_per_cell; ++j)
-              {
-                const unsigned int ci = s.shape_component[i];
-                const unsigned int cj = s.shape_component[j];
-                const unsigned int a  = s.shape_node[i];
-                const unsigned int b  = s.shape_node[j];
-                c.matrix(i, j) =
-                  ci <= cj ?
-                    s.Kt[(pair_index(ci, cj) * n_nodes + a) * n_nodes + b] :
-                    s.Kt[(pair_index(cj, ci) * n_nodes + b) * n_nodes + a];
-              }
-        }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            c.matrix(i, j) = s.Kt[s.block_entry[i * dofs_per_cell + j]];
 
       if (want_gradient)
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -479,8 +416,9 @@ namespace Signorini
 
     Evaluation    result;
     double        force_sq = 0.;
-    DirectScatter direct(constraints, dof_handler.locally_owned_dofs(),
-                         hessian, rhs);
+    scatter.begin(hessian, rhs, constraints, dof_handler.locally_owned_dofs(),
+                  dof_handler.get_triangulation().n_active_cells(),
+                  dofs_per_cell);
     auto       copier   = [&](const Copy &c) {
       if (!c.active)
         return;
@@ -495,7 +433,7 @@ namespace Signorini
         }
       if (want_hessian)
         {
-          if (!direct.add(c))
+          if (!scatter.add(c.cell_index, c.dofs, c.matrix, c.rhs))
             constraints.distribute_local_to_global(c.matrix, c.rhs, c.dofs,
                                                    *hessian, *rhs);
         }
@@ -507,7 +445,7 @@ namespace Signorini
     AssembleFlags flags = assemble_own_cells;
     if (bc.has_traction())
       flags |= assemble_boundary_faces;
-    Scratch<dim> scratch(mapping, fe, bc.has_traction());
+    Scratch<dim> scratch(mapping, fe, bc.has_traction(), bc.has_body_force());
     mesh_loop(filter_iterators(dof_handler.active_cell_iterators(),
                                IteratorFilters::LocallyOwnedCell()),
               cell_worker,

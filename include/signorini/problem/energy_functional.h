@@ -2,6 +2,7 @@
 
 #include <signorini/scene/boundary_conditions.h>
 #include <signorini/material/interface.h>
+#include <signorini/problem/cell_scatter.h>
 #include <signorini/problem/objective.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -54,6 +55,9 @@ namespace Signorini
     const Mapping<dim>                                              &mapping;
     const std::map<types::material_id, const Material::Interface *> &materials;
     const BoundaryConditions<dim>                                    &bc;
+    /// Positions of the cells' Hessian entries, kept between evaluations
+    /// while the matrix's pattern stays the same.
+    mutable CellScatter scatter;
   };
   /// The energy functional at a fixed load time, as an Objective (what a
   /// Newton or interior point minimiser sees when there is no penalty).

@@ -1,0 +1,201 @@
+#include <signorini/problem/cell_scatter.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_FEVector.h>
+
+#include <algorithm>
+#include <string>
+
+namespace Signorini
+{
+  namespace
+  {
+    /// A hash of the local structure of @p A: its row and column maps and
+    /// the column indices of every locally stored row.
+    std::size_t
+    local_structure_hash(const Epetra_CrsMatrix &A,
+                         const int              *row_offsets,
+                         const int              *column_indices)
+    {
+      // Eight independent FNV-style lanes, so that the pass over the
+      // column indices (the bulk) is not one long chain of dependent
+      // multiplications.
+      constexpr std::uint64_t prime = 1099511628211ull;
+      std::uint64_t           h[8];
+      for (unsigned int j = 0; j < 8; ++j)
+        h[j] = 1469598103934665603ull + j;
+      std::uint64_t  lane = 0;
+      const auto     mix  = [&](const long long v) {
+        std::uint64_t &x = h[lane++ & 7];
+        x = (x ^ static_cast<std::uint64_t>(v)) * prime;
+      };
+      const Epetra_BlockMap &rows = A.RowMap();
+      const Epetra_BlockMap &cols = A.ColMap();
+      mix(rows.NumMyElements());
+      for (int r = 0; r < rows.NumMyElements(); ++r)
+        mix(rows.GID64(r));
+      mix(cols.NumMyElements());
+      for (int c = 0; c < cols.NumMyElements(); ++c)
+        mix(cols.GID64(c));
+      const int n_rows = A.NumMyRows();
+      for (int r = 0; r <= n_rows; ++r)
+        mix(row_offsets[r]);
+      const int n_entries = row_offsets[n_rows];
+      int       k         = 0;
+      for (; k + 8 <= n_entries; k += 8)
+        for (unsigned int j = 0; j < 8; ++j)
+          h[j] = (h[j] ^ static_cast<std::uint64_t>(column_indices[k + j])) *
+                 prime;
+      for (; k < n_entries; ++k)
+        mix(column_indices[k]);
+      std::uint64_t result = 0;
+      for (unsigned int j = 0; j < 8; ++j)
+        result = (result ^ h[j]) * prime + j;
+      return static_cast<std::size_t>(result);
+    }
+  } // namespace
+
+  void
+  CellScatter::begin(MatrixType                      *matrix_,
+                     VectorType                      *vector_,
+                     const AffineConstraints<double> &constraints_,
+                     const IndexSet                  &owned_,
+                     const unsigned int               n_cells,
+                     const unsigned int               dofs_per_cell_)
+  {
+    constraints = &constraints_;
+    owned       = &owned_;
+    enabled     = false;
+    if (matrix_ == nullptr || vector_ == nullptr ||
+        !matrix_->trilinos_matrix().Filled())
+      return;
+    matrix = &matrix_->trilinos_matrix();
+    if (matrix->ExtractCrsDataPointers(row_offsets, column_indices,
+                                       matrix_values) != 0)
+      return;
+    // The vector's entries are addressed by the matrix's local row index:
+    // both are laid out over the same locally owned DoFs.
+    const Epetra_BlockMap &vector_map = vector_->trilinos_vector().Map();
+    if (!vector_map.SameAs(matrix->RowMap()))
+      return;
+    vector_values = vector_->trilinos_vector()[0];
+
+    const std::size_t hash =
+      local_structure_hash(*matrix, row_offsets, column_indices);
+    if (hash != pattern_hash || dofs_per_cell_ != dofs_per_cell ||
+        states.size() != n_cells)
+      {
+        pattern_hash  = hash;
+        dofs_per_cell = dofs_per_cell_;
+        states.assign(n_cells, unknown);
+        rows.assign(std::size_t(n_cells) * dofs_per_cell, -1);
+        slots.assign(std::size_t(n_cells) * dofs_per_cell * dofs_per_cell,
+                     0);
+      }
+    enabled = true;
+  }
+
+  bool
+  CellScatter::find_positions(
+    const unsigned int                          cell_index,
+    const std::vector<types::global_dof_index> &dofs)
+  {
+    const unsigned int n = dofs_per_cell;
+    columns.resize(n);
+    order.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        if (!owned->is_element(dofs[k]))
+          return false;
+        columns[k] = matrix->LCID(
+          static_cast<TrilinosWrappers::types::int_type>(dofs[k]));
+        if (columns[k] < 0)
+          return false;
+        order[k] = k;
+      }
+    std::sort(order.begin(), order.end(),
+              [this](const unsigned int a, const unsigned int b) {
+                return columns[a] < columns[b];
+              });
+    int          *cell_rows  = &rows[std::size_t(cell_index) * n];
+    std::uint8_t *cell_slots = &slots[std::size_t(cell_index) * n * n];
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const int row = matrix->LRID(
+          static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
+        AssertThrow(row >= 0,
+                    ExcMessage("Hessian row of DoF " + std::to_string(dofs[i]) +
+                               " is not locally stored"));
+        const int  begin     = row_offsets[row];
+        const int  n_entries = row_offsets[row + 1] - begin;
+        const int *row_columns = column_indices + begin;
+        if (n_entries > 255)
+          return false;
+        int p = 0;
+        for (unsigned int kk = 0; kk < n; ++kk)
+          {
+            const unsigned int k = order[kk];
+            while (p < n_entries && row_columns[p] < columns[k])
+              ++p;
+            AssertThrow(p < n_entries && row_columns[p] == columns[k],
+                        ExcMessage("the Hessian's sparsity pattern has no "
+                                   "entry (" +
+                                   std::to_string(dofs[i]) + ", " +
+                                   std::to_string(dofs[k]) + ")"));
+            cell_slots[i * n + k] = static_cast<std::uint8_t>(p);
+          }
+        cell_rows[i] = row;
+      }
+    return true;
+  }
+
+  bool
+  CellScatter::add(const unsigned int                          cell_index,
+                   const std::vector<types::global_dof_index> &dofs,
+                   const FullMatrix<double>                   &cell_matrix,
+                   const Vector<double>                       &cell_vector)
+  {
+    if (!enabled || states[cell_index] == general)
+      return false;
+    const unsigned int n = dofs_per_cell;
+    AssertDimension(dofs.size(), n);
+    // Constraints may change between assemblies on the same pattern.
+    for (const types::global_dof_index dof : dofs)
+      if (constraints->is_constrained(dof))
+        return false;
+    const auto same_rows = [&]() {
+      // The same DoFs as when the positions were found (a renumbering on
+      // an unchanged pattern would show here).
+      const int *cell_rows = &rows[std::size_t(cell_index) * n];
+      for (unsigned int i = 0; i < n; ++i)
+        if (matrix->LRID(static_cast<TrilinosWrappers::types::int_type>(
+              dofs[i])) != cell_rows[i])
+          return false;
+      return true;
+    };
+    if (states[cell_index] == unknown || !same_rows())
+      {
+        states[cell_index] =
+          find_positions(cell_index, dofs) ? cached : general;
+        if (states[cell_index] == general)
+          return false;
+      }
+    const int          *cell_rows  = &rows[std::size_t(cell_index) * n];
+    const std::uint8_t *cell_slots = &slots[std::size_t(cell_index) * n * n];
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        double *const row_values = matrix_values + row_offsets[cell_rows[i]];
+        const std::uint8_t *const row_slots = cell_slots + i * n;
+        for (unsigned int k = 0; k < n; ++k)
+          row_values[row_slots[k]] += cell_matrix(i, k);
+        vector_values[cell_rows[i]] += cell_vector(i);
+      }
+    return true;
+  }
+
+  std::size_t
+  CellScatter::n_cached_cells() const
+  {
+    return std::count(states.begin(), states.end(), cached);
+  }
+} // namespace Signorini
