@@ -18,14 +18,23 @@ namespace Signorini
                                            Response<dim>      &response,
                                            const bool want_derivatives) const
     {
-      const double J = determinant(F);
+      // In plane strain (dim = 2) F = diag(F2, 1): every quantity below is
+      // block diagonal with a 1 in the out-of-plane corner, so only the
+      // in-plane blocks are formed (C2 = F2^T F2, tr C = tr C2 + 1,
+      // C : C = C2 : C2 + 1, J = det F2), with the same roundings as the
+      // 3D algebra on the embedded F up to the order of exact terms.
+      Tensor<2, dim> Fb;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          Fb[i][j] = F[i][j];
+      const double J = (dim == 3 ? determinant(F) : determinant(Fb));
       if (!(J > 0.) || !std::isfinite(J))
         return false;
 
-      const Tensor<2, 3> C    = transpose(F) * F;
-      const double       I1   = trace(C);
-      const double       trC2 = scalar_product(C, C);
-      const double       I2   = 0.5 * (I1 * I1 - trC2);
+      const Tensor<2, dim> C    = transpose(Fb) * Fb;
+      const double         I1   = trace(C) + (dim == 2 ? 1. : 0.);
+      const double         trC2 = scalar_product(C, C) + (dim == 2 ? 1. : 0.);
+      const double         I2   = 0.5 * (I1 * I1 - trC2);
 
       const std::array<double, 3> invariants = {{I1, I2, J}};
       if (!admissible(invariants))
@@ -42,9 +51,9 @@ namespace Signorini
 
       // Only the dim x dim blocks are needed: in plane strain F33 = 1 is
       // held fixed, so P and A are the in-plane blocks of the 3D ones.
-      const Tensor<2, 3> FC    = F * C;
-      const Tensor<2, 3> FinvT = transpose(invert(F));
-      const Tensor<2, 3> B     = F * transpose(F);
+      const Tensor<2, dim> FC    = Fb * C;
+      const Tensor<2, dim> FinvT = transpose(invert(Fb));
+      const Tensor<2, dim> B     = Fb * transpose(Fb);
 
       // dIa/dF restricted to the block: G0 = 2F, G1 = 2(I1 F - F C),
       // G2 = J F^-T.
@@ -52,8 +61,8 @@ namespace Signorini
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           {
-            G[0][i][j] = 2. * F[i][j];
-            G[1][i][j] = 2. * (I1 * F[i][j] - FC[i][j]);
+            G[0][i][j] = 2. * Fb[i][j];
+            G[1][i][j] = 2. * (I1 * Fb[i][j] - FC[i][j]);
             G[2][i][j] = J * FinvT[i][j];
           }
       response.P = dpsi[0] * G[0] + dpsi[1] * G[1] + dpsi[2] * G[2];
@@ -89,7 +98,7 @@ namespace Signorini
                 double value = H[0][i][j] * G[0][k][l] +
                                H[1][i][j] * G[1][k][l] +
                                H[2][i][j] * G[2][k][l];
-                value += s2 * (2. * F[i][j] * F[k][l] - F[i][l] * F[k][j]);
+                value += s2 * (2. * Fb[i][j] * Fb[k][l] - Fb[i][l] * Fb[k][j]);
                 value += sJ * (N[i][j] * N[k][l] - N[i][l] * N[k][j]);
                 if (i == k)
                   value -= s2 * C[l][j];
