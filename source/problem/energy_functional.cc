@@ -20,8 +20,9 @@ namespace Signorini
               const FiniteElement<dim> &fe,
               const bool                with_faces,
               const bool                with_body_force)
-        : fe_values(mapping,
-                    fe,
+        : system_fe(fe)
+        , fe_values(mapping,
+                    fe.base_element(0),
                     QGauss<dim>(fe.degree + 1),
                     update_values | update_gradients | update_JxW_values |
                       (with_body_force ? update_quadrature_points :
@@ -36,20 +37,23 @@ namespace Signorini
         , with_body_force(with_body_force)
       {
         // The element is FE_Q(p)^dim: shape function i is the scalar shape
-        // function of node shape_node[i] in component shape_component[i];
-        // node_shape[a] is node a's shape function in component 0, whose
-        // gradient is that of the node's scalar shape function.
+        // function of node shape_node[i] in component shape_component[i].
+        // The cell values are those of the scalar element (fe_values), whose
+        // shape function a is node a's: the mapping transforms n/dim
+        // gradients instead of n, and nothing is copied into the vector
+        // element's shape functions.
+        AssertThrow(fe.n_base_elements() == 1 &&
+                      fe.element_multiplicity(0) == dim,
+                    ExcMessage("the energy assembly needs a vector element "
+                               "FE_Q(p)^dim"));
         const unsigned int n = fe.n_dofs_per_cell();
         shape_component.resize(n);
         shape_node.resize(n);
-        node_shape.resize(n / dim);
         for (unsigned int i = 0; i < n; ++i)
           {
             const auto ci      = fe.system_to_component_index(i);
             shape_component[i] = ci.first;
             shape_node[i]      = ci.second;
-            if (ci.first == 0)
-              node_shape[ci.second] = i;
           }
         // Where entry (i, j) of the local Hessian is in the node blocks
         // Kt[p(c,d)][a][b] of the component pairs c <= d (see
@@ -74,11 +78,13 @@ namespace Signorini
 
       Scratch(const Scratch &other)
         : Scratch(other.fe_values.get_mapping(),
-                  other.fe_values.get_fe(),
+                  other.system_fe,
                   other.with_faces,
                   other.with_body_force)
       {}
 
+      const FiniteElement<dim>         &system_fe;
+      /// Values of the scalar base element on the cell.
       FEValues<dim>                     fe_values;
       FEFaceValues<dim>                 fe_face_values;
       bool                              with_faces;
@@ -88,7 +94,6 @@ namespace Signorini
       std::vector<Tensor<1, dim>>       node_grads;
       std::vector<unsigned int>         shape_component;
       std::vector<unsigned int>         shape_node;
-      std::vector<unsigned int>         node_shape;
       std::vector<unsigned int>         block_entry;
       std::vector<double>               local_u;
       std::vector<double>               gT;
@@ -274,7 +279,8 @@ namespace Signorini
       body_force->set_time(time);
 
     auto cell_worker = [&](const auto &cell, Scratch<dim> &s, Copy &c) {
-      s.fe_values.reinit(cell);
+      s.fe_values.reinit(
+        static_cast<typename Triangulation<dim>::cell_iterator>(cell));
       const unsigned int n_q = s.fe_values.n_quadrature_points;
       c.reset(); // mesh_loop reuses one copy object per thread
       c.dofs.resize(dofs_per_cell);
@@ -298,8 +304,11 @@ namespace Signorini
       u.extract_subvector_to(c.dofs.begin(), c.dofs.end(), s.local_u.begin());
       if (bc.has_body_force())
         {
-          s.values.resize(n_q);
-          s.fe_values[displacement].get_function_values(u, s.values);
+          s.values.assign(n_q, Tensor<1, dim>());
+          for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              s.values[q][s.shape_component[i]] +=
+                s.local_u[i] * s.fe_values.shape_value(s.shape_node[i], q);
           s.loads.resize(n_q, Vector<double>(dim));
           body_force->vector_value_list(s.fe_values.get_quadrature_points(),
                                        s.loads);
@@ -326,7 +335,7 @@ namespace Signorini
         {
           // The scalar gradients once per node (not per shape function).
           for (unsigned int a = 0; a < n_nodes; ++a)
-            s.node_grads[a] = s.fe_values.shape_grad(s.node_shape[a], q);
+            s.node_grads[a] = s.fe_values.shape_grad(a, q);
           Tensor<2, dim> F = unit_symmetric_tensor<dim>();
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             F[s.shape_component[i]] += s.local_u[i] * s.node_grads[s.shape_node[i]];
@@ -354,7 +363,7 @@ namespace Signorini
               f_int[i] += (response.P[ci] * s.node_grads[s.shape_node[i]]) * JxW;
               if (bc.has_body_force())
                 f_ext[i] += s.loads[q][ci] *
-                            s.fe_values.shape_value_component(i, q, ci) * JxW;
+                            s.fe_values.shape_value(s.shape_node[i], q) * JxW;
             }
 
           if (!want_hessian)
