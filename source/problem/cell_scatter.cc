@@ -1,3 +1,4 @@
+#include <signorini/pattern_hash.h>
 #include <signorini/problem/cell_scatter.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -8,53 +9,6 @@
 
 namespace Signorini
 {
-  namespace
-  {
-    /// A hash of the local structure of @p A: its row and column maps and
-    /// the column indices of every locally stored row.
-    std::size_t
-    local_structure_hash(const Epetra_CrsMatrix &A,
-                         const int              *row_offsets,
-                         const int              *column_indices)
-    {
-      // Eight independent FNV-style lanes, so that the pass over the
-      // column indices (the bulk) is not one long chain of dependent
-      // multiplications.
-      constexpr std::uint64_t prime = 1099511628211ull;
-      std::uint64_t           h[8];
-      for (unsigned int j = 0; j < 8; ++j)
-        h[j] = 1469598103934665603ull + j;
-      std::uint64_t  lane = 0;
-      const auto     mix  = [&](const long long v) {
-        std::uint64_t &x = h[lane++ & 7];
-        x = (x ^ static_cast<std::uint64_t>(v)) * prime;
-      };
-      const Epetra_BlockMap &rows = A.RowMap();
-      const Epetra_BlockMap &cols = A.ColMap();
-      mix(rows.NumMyElements());
-      for (int r = 0; r < rows.NumMyElements(); ++r)
-        mix(rows.GID64(r));
-      mix(cols.NumMyElements());
-      for (int c = 0; c < cols.NumMyElements(); ++c)
-        mix(cols.GID64(c));
-      const int n_rows = A.NumMyRows();
-      for (int r = 0; r <= n_rows; ++r)
-        mix(row_offsets[r]);
-      const int n_entries = row_offsets[n_rows];
-      int       k         = 0;
-      for (; k + 8 <= n_entries; k += 8)
-        for (unsigned int j = 0; j < 8; ++j)
-          h[j] = (h[j] ^ static_cast<std::uint64_t>(column_indices[k + j])) *
-                 prime;
-      for (; k < n_entries; ++k)
-        mix(column_indices[k]);
-      std::uint64_t result = 0;
-      for (unsigned int j = 0; j < 8; ++j)
-        result = (result ^ h[j]) * prime + j;
-      return static_cast<std::size_t>(result);
-    }
-  } // namespace
-
   void
   CellScatter::begin(MatrixType                      *matrix_,
                      VectorType                      *vector_,
@@ -80,8 +34,7 @@ namespace Signorini
       return;
     vector_values = vector_->trilinos_vector()[0];
 
-    const std::size_t hash =
-      local_structure_hash(*matrix, row_offsets, column_indices);
+    const std::size_t hash = sparsity_pattern_hash(*matrix);
     if (hash != pattern_hash || dofs_per_cell_ != dofs_per_cell ||
         states.size() != n_cells)
       {

@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/pattern_hash.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/solvers/petsc_direct_solver.h>
 

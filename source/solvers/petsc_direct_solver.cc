@@ -1,3 +1,4 @@
+#include <signorini/pattern_hash.h>
 #include <signorini/solvers/petsc_direct_solver.h>
 
 #include <deal.II/base/exceptions.h>
@@ -14,31 +15,6 @@
 
 namespace Signorini
 {
-  std::size_t
-  sparsity_pattern_hash(const Epetra_CrsMatrix &A)
-  {
-    std::size_t h   = 1469598103934665603ull;
-    const auto  mix = [&h](const long long v) {
-      h ^= static_cast<std::size_t>(v) + 0x9e3779b97f4a7c15ull + (h << 6) +
-           (h >> 2);
-    };
-    const Epetra_CrsGraph &graph = A.Graph();
-    const Epetra_BlockMap &cols  = graph.ColMap();
-    const Epetra_BlockMap &rows  = graph.RowMap();
-    mix(graph.NumGlobalRows64());
-    for (int r = 0; r < graph.NumMyRows(); ++r)
-      {
-        int  n       = 0;
-        int *indices = nullptr;
-        graph.ExtractMyRowView(r, n, indices);
-        mix(rows.GID64(r));
-        mix(n);
-        for (int k = 0; k < n; ++k)
-          mix(cols.GID64(indices[k]));
-      }
-    return h;
-  }
-
   namespace
   {
     /// A PETSc call that failed (not a failed factorisation, which PETSc
@@ -81,6 +57,10 @@ namespace Signorini
     /// whether PETSc holds their factorisation.
     std::vector<double> values;
     bool                factorized = false;
+    /// The global column indices of the local rows, in Epetra's order, and
+    /// where each row starts in them (found once per pattern).
+    std::vector<PetscInt> columns;
+    std::vector<int>      row_start;
 
     ~State()
     {
@@ -193,6 +173,7 @@ namespace Signorini
             state->n_global = A.NumGlobalRows64();
 
             std::vector<PetscInt> diagonal(n, 0), off_diagonal(n, 0);
+            state->row_start.assign(1, 0);
             for (int r = 0; r < n; ++r)
               {
                 int  m       = 0;
@@ -201,11 +182,13 @@ namespace Signorini
                 for (int k = 0; k < m; ++k)
                   {
                     const long long c = cols.GID64(indices[k]);
+                    state->columns.push_back(static_cast<PetscInt>(c));
                     if (c >= state->first && c < state->first + n)
                       ++diagonal[r];
                     else
                       ++off_diagonal[r];
                   }
+                state->row_start.push_back(state->columns.size());
               }
             Mat &M = state->matrix;
             check(MatCreate(comm, &M), "MatCreate");
@@ -260,20 +243,17 @@ namespace Signorini
           {
             s.factorized = false;
             s.values.clear();
-            std::vector<PetscInt> indices;
             for (int r = 0; r < n; ++r)
               {
-                int     m     = 0;
-                int    *local = nullptr;
-                double *v     = nullptr;
-                A.Graph().ExtractMyRowView(r, m, local);
+                int     m = 0;
+                double *v = nullptr;
                 A.ExtractMyRowView(r, m, v);
-                indices.resize(m);
-                for (int k = 0; k < m; ++k)
-                  indices[k] = static_cast<PetscInt>(cols.GID64(local[k]));
+                AssertThrow(m == s.row_start[r + 1] - s.row_start[r],
+                            dealii::ExcInternalError());
                 const PetscInt row = s.first + r;
-                check(MatSetValues(
-                        s.matrix, 1, &row, m, indices.data(), v, INSERT_VALUES),
+                check(MatSetValues(s.matrix, 1, &row, m,
+                                   s.columns.data() + s.row_start[r], v,
+                                   INSERT_VALUES),
                       "MatSetValues");
                 s.values.insert(s.values.end(), v, v + m);
               }

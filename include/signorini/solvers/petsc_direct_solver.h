@@ -106,10 +106,4 @@ namespace Signorini
     int                    negative   = -1;
     int                    ordering   = -1;
   };
-
-  /// A hash of the locally owned rows' sparsity pattern (global column
-  /// indices in their stored order), to tell whether a symbolic analysis
-  /// still applies. Local: compare it on every rank.
-  std::size_t
-  sparsity_pattern_hash(const Epetra_CrsMatrix &A);
 } // namespace Signorini
