@@ -57,7 +57,8 @@ namespace Signorini
           }
         // Where entry (i, j) of the local Hessian is in the node blocks
         // Kt[p(c,d)][a][b] of the component pairs c <= d (see
-        // hessian_kernel), mirrored for c > d.
+        // hessian_kernel), mirrored for c > d and, in the diagonal pairs
+        // c = d, for a > b.
         const unsigned int n_nodes = n / dim;
         const auto pair_index = [](const unsigned int c, const unsigned int d) {
           return c * dim - c * (c - 1) / 2 + (d - c);
@@ -70,9 +71,12 @@ namespace Signorini
               const unsigned int cj = shape_component[j];
               const unsigned int a  = shape_node[i];
               const unsigned int b  = shape_node[j];
+              // the upper triangle (in the node pair) of a diagonal pair
+              // block, else the block of c <= d
+              const bool upper = ci < cj || (ci == cj && a <= b);
               block_entry[i * n + j] =
-                ci <= cj ? (pair_index(ci, cj) * n_nodes + a) * n_nodes + b :
-                           (pair_index(cj, ci) * n_nodes + b) * n_nodes + a;
+                upper ? (pair_index(ci, cj) * n_nodes + a) * n_nodes + b :
+                        (pair_index(cj, ci) * n_nodes + b) * n_nodes + a;
             }
       }
 
@@ -178,8 +182,12 @@ namespace Signorini
                   }
               }
             // K[a][b] += AG[L][a] g_b[L], L = 0, 1, (2) in turn: each entry
-            // is loaded and stored once per quadrature point, and receives
-            // its terms in the same order (and roundings) as one pass per L
+            // is loaded and stored once per quadrature point. A diagonal
+            // pair (c = d) is symmetric in (a, b) (A[c][J][c][L] is
+            // symmetric in J, L): its lower triangle is formed too (whole
+            // rows vectorise; skipping it was measured slower) but not
+            // used: Scratch::block_entry reads the upper one for both, so
+            // that the local matrix is exactly symmetric.
             for (unsigned int a = 0; a < n; ++a)
               {
                 double *Ka = K + a * n;
