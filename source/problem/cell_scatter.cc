@@ -33,6 +33,8 @@ namespace Signorini
     if (!vector_map.SameAs(matrix->RowMap()))
       return;
     vector_values = vector_->trilinos_vector()[0];
+    linear_rows   = matrix->RowMap().LinearMap();
+    first_row     = matrix->RowMap().MinMyGID64();
 
     const std::size_t hash = sparsity_pattern_hash(*matrix);
     if (hash != pattern_hash || dofs_per_cell_ != dofs_per_cell ||
@@ -118,11 +120,15 @@ namespace Signorini
         return false;
     const auto same_rows = [&]() {
       // The same DoFs as when the positions were found (a renumbering on
-      // an unchanged pattern would show here).
+      // an unchanged pattern would show here). deal.II's owned DoFs are one
+      // contiguous range, so the local row is a subtraction.
       const int *cell_rows = &rows[std::size_t(cell_index) * n];
       for (unsigned int i = 0; i < n; ++i)
-        if (matrix->LRID(static_cast<TrilinosWrappers::types::int_type>(
-              dofs[i])) != cell_rows[i])
+        if ((linear_rows ?
+               static_cast<long long>(dofs[i]) - first_row :
+               static_cast<long long>(matrix->LRID(
+                 static_cast<TrilinosWrappers::types::int_type>(dofs[i])))) !=
+            cell_rows[i])
           return false;
       return true;
     };

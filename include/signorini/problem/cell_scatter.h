@@ -91,6 +91,8 @@ namespace Signorini
     bool                             enabled     = false;
     const Epetra_CrsMatrix          *matrix      = nullptr;
     double                          *vector_values = nullptr;
+    bool                             linear_rows   = false;
+    long long                        first_row     = 0;
     int                             *row_offsets   = nullptr;
     int                             *column_indices = nullptr;
     double                          *matrix_values  = nullptr;
