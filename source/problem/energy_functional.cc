@@ -7,6 +7,8 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/meshworker/mesh_loop.h>
 
+#include <Epetra_FEVector.h>
+
 #include <algorithm>
 
 namespace Signorini
@@ -286,6 +288,33 @@ namespace Signorini
     if (body_force)
       body_force->set_time(time);
 
+    // The cell's nodal values are read straight from the vector's storage
+    // for locally owned DoFs: deal.II's owned DoFs are one contiguous
+    // range, stored contiguously (the vector's map is sorted by global
+    // index), which is checked here; ghosts go through the map.
+    const IndexSet  &owned       = dof_handler.locally_owned_dofs();
+    const double    *u_values    = u.trilinos_vector()[0];
+    const Epetra_BlockMap &u_map = u.trilinos_vector().Map();
+    const types::global_dof_index first_owned =
+      owned.n_elements() > 0 ? *owned.begin() : 0;
+    const types::global_dof_index n_owned = owned.n_elements();
+    const int owned_offset =
+      n_owned > 0 ? u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
+                      first_owned)) :
+                    0;
+    const bool direct_read =
+      n_owned > 0 && owned.is_contiguous() && owned_offset >= 0 &&
+      u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
+        first_owned + n_owned - 1)) ==
+        owned_offset + static_cast<int>(n_owned) - 1;
+    const auto read_values = [&](const std::vector<types::global_dof_index> &dofs,
+                                 std::vector<double> &values) {
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        values[k] = direct_read && dofs[k] - first_owned < n_owned ?
+                      u_values[owned_offset + (dofs[k] - first_owned)] :
+                      u(dofs[k]);
+    };
+
     auto cell_worker = [&](const auto &cell, Scratch<dim> &s, Copy &c) {
       s.fe_values.reinit(
         static_cast<typename Triangulation<dim>::cell_iterator>(cell));
@@ -309,7 +338,7 @@ namespace Signorini
       const unsigned int n_nodes = dofs_per_cell / dim;
       s.node_grads.resize(n_nodes);
       s.local_u.resize(dofs_per_cell);
-      u.extract_subvector_to(c.dofs.begin(), c.dofs.end(), s.local_u.begin());
+      read_values(c.dofs, s.local_u);
       if (bc.has_body_force())
         {
           s.values.assign(n_q, Tensor<1, dim>());
