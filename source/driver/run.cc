@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -386,13 +385,6 @@ namespace Signorini
               const bool                                 quiet,
               const std::function<void(const Report &)> &on_report)
   {
-    // Started without mpirun, Open MPI's MPI_Init forks a supporting
-    // daemon (orted) in case the process later spawns others; the program
-    // never does, and the daemon's start costs about 0.4 s of every
-    // one-rank run (doc/performance.md, "Process start-up"). Under mpirun
-    // the setting does not apply; a value set by the user wins; other MPI
-    // implementations ignore it.
-    setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     // deal.II prints exceptions to stderr when they are created in debug
