@@ -21,13 +21,14 @@ namespace Signorini
       // In plane strain (dim = 2) F = diag(F2, 1): every quantity below is
       // block diagonal with a 1 in the out-of-plane corner, so only the
       // in-plane blocks are formed (C2 = F2^T F2, tr C = tr C2 + 1,
-      // C : C = C2 : C2 + 1, J = det F2), with the same roundings as the
-      // 3D algebra on the embedded F up to the order of exact terms.
+      // C : C = C2 : C2 + 1, J = det F2). The values are those of the 3D
+      // formulas on the embedded F; their last bits may differ, as the
+      // sums are taken in another order. In 3D, Fb is F.
       Tensor<2, dim> Fb;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           Fb[i][j] = F[i][j];
-      const double J = (dim == 3 ? determinant(F) : determinant(Fb));
+      const double J = determinant(Fb);
       if (!(J > 0.) || !std::isfinite(J))
         return false;
 
