@@ -123,6 +123,39 @@ namespace Signorini
     }
 
     template <int dim>
+    bool
+    RigidFoundation<dim>::limit_trial(const VectorType &u, VectorType &trial) const
+    {
+      const MPI_Comm comm  = dof_handler.get_communicator();
+      double         depth = 0.;
+      for (const Node &node : contact_nodes())
+        depth = std::max(depth, evaluate(node, u).penetration());
+      depth = Utilities::MPI::max(depth, comm);
+      if (depth <= 0.)
+        return false;
+      unsigned int moved = 0;
+      for (const Node &node : contact_nodes())
+        {
+          if (evaluate(node, u).g < 0. ||
+              !trial.in_local_range(node.dofs[dim - 1]))
+            continue;
+          Point<dim> x;
+          for (unsigned int c = 0; c < dim; ++c)
+            x[c] = node.X[c] + trial[node.dofs[c]];
+          const double g = x[dim - 1] - surface->evaluate(x).psi;
+          if (g < -depth)
+            {
+              trial[node.dofs[dim - 1]] += -depth - g;
+              ++moved;
+            }
+        }
+      // The writes above leave the vector in 'add' mode on the ranks that
+      // wrote: every rank compresses, so that all agree (collective).
+      trial.compress(VectorOperation::add);
+      return Utilities::MPI::sum(moved, comm) > 0;
+    }
+
+    template <int dim>
     double
     RigidFoundation<dim>::active_threshold(const std::vector<double> &forces) const
     {

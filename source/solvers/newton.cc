@@ -67,6 +67,19 @@ namespace Signorini
                       "iterations and the same path on 1 and 2 ranks. "
                       "Solvers without the inertia (CG, Amesos) use the "
                       "descent test alone.");
+    prm.declare_entry("Limit trials",
+                      "true",
+                      Patterns::Bool(),
+                      "Each line-search trial is first offered to the contact "
+                      "model, which may move it back (the rigid foundation "
+                      "lifts a node that was free and would sink deeper than "
+                      "the deepest node in contact to that depth); the "
+                      "limited trial is accepted on the Armijo test with the "
+                      "slope of the move it makes, otherwise the plain trial "
+                      "is tested. A load step that widens the contact zone "
+                      "then needs no short steps for the nodes that come "
+                      "into contact (doc/performance.md). Two-body contact "
+                      "limits nothing.");
     prm.declare_entry("Maximum increment",
                       "0.1",
                       Patterns::Double(0.),
@@ -101,6 +114,7 @@ namespace Signorini
     initial_shift      = prm.get_double("Initial shift");
     max_shifts         = prm.get_integer("Maximum shifts");
     inertia_test       = prm.get_bool("Inertia test");
+    limit_trials       = prm.get_bool("Limit trials");
     max_increment      = prm.get_double("Maximum increment");
   }
 
@@ -391,10 +405,28 @@ namespace Signorini
                          << std::endl;
               }
           }
+        const VectorType u_ghosted(ghosted);
+        const double     rhs_u = rhs * u;
         for (unsigned int k = 0; !accepted && k <= parameters.max_backtracks; ++k)
           {
             trial = u;
             trial.add(alpha, d);
+            if (parameters.limit_trials && objective.limit_trial(u_ghosted, trial))
+              {
+                constraints.distribute(trial);
+                const double limited_slope = rhs_u - rhs * trial;
+                ghosted = trial;
+                trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+                if (limited_slope < 0. && trial_e.admissible &&
+                    trial_e.value <= e.value + parameters.armijo_c1 * limited_slope)
+                  {
+                    progress << "      trial limited by the contact model" << std::endl;
+                    accepted = true;
+                    break;
+                  }
+                trial = u;
+                trial.add(alpha, d);
+              }
             ghosted = trial;
             trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
             if (trial_e.admissible &&

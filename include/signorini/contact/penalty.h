@@ -100,6 +100,15 @@ namespace Signorini
         return false;
       }
 
+      /// See Objective::limit_trial(). Default: nothing moves.
+      virtual bool
+      limit_trial(const VectorType &u, VectorType &trial) const
+      {
+        (void)u;
+        (void)trial;
+        return false;
+      }
+
       /// Largest step length along the direction @p d (locally owned)
       /// from the ghosted @p u that the model allows (collective).
       virtual double
@@ -150,6 +159,12 @@ namespace Signorini
       max_step(const VectorType &u, const VectorType &d) override
       {
         return contact.max_step(u, d);
+      }
+
+      bool
+      limit_trial(const VectorType &u, VectorType &trial) override
+      {
+        return contact.limit_trial(u, trial);
       }
 
       bool

@@ -185,6 +185,15 @@ namespace Signorini
                   MatrixType                      *hessian,
                   std::vector<double>             *forces = nullptr) const override;
 
+      /**
+       * Lift each node that is free at the ghosted @p u (g_k >= 0) and
+       * whose vertical position in @p trial (locally owned) lies deeper
+       * than the deepest penetration at @p u to that depth, moving its
+       * vertical DoF only. Nothing moves while no node penetrates.
+       */
+      bool
+      limit_trial(const VectorType &u, VectorType &trial) const override;
+
       typename PenaltyTerm<dim>::Measure
       measure(const VectorType &u, const std::vector<double> &forces) const override
       {

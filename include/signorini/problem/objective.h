@@ -58,6 +58,21 @@ namespace Signorini
     }
 
     /**
+     * Move the trial state @p trial of a line search from the ghosted
+     * state @p u back towards states the objective's model makes
+     * plausible (a contact node that was free at @p u and would sink
+     * deeper than the deepest node in contact is lifted to that depth).
+     * Returns whether anything moved (collective). Default: nothing.
+     */
+    virtual bool
+    limit_trial(const VectorType &u, VectorType &trial)
+    {
+      (void)u;
+      (void)trial;
+      return false;
+    }
+
+    /**
      * Switch the Hessians of the following evaluations to a positive
      * semidefinite approximation of the objective's non-convex parts (on)
      * or back to the exact ones (off). Returns whether the objective has

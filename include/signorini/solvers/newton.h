@@ -50,6 +50,7 @@ namespace Signorini
       double       initial_shift      = 1e-6;
       unsigned int max_shifts         = 8;
       bool         inertia_test       = true;
+      bool         limit_trials       = true;
       double       max_increment      = 0.1;
       double       increment_tolerance = 1e-14;
 
