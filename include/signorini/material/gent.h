@@ -68,10 +68,13 @@ namespace Signorini
       static std::vector<Example>
       examples();
 
+      /// I1b - 3 < J_m, written as I1^3 < (3 + J_m)^3 J^2 (I1, J > 0):
+      /// no pow() for a test made at every quadrature point.
       bool
       admissible(const double I1, const double /*I2*/, const double J) const
       {
-        return J > 0. && std::pow(J, -2. / 3.) * I1 - 3. < J_m;
+        const double b = 3. + J_m;
+        return J > 0. && I1 * I1 * I1 < b * b * b * J * J;
       }
 
       template <typename Number>
