@@ -378,6 +378,15 @@ namespace Signorini
                        << " of the Newton step by the contact model" << std::endl;
             }
         }
+        // The state u (ghosted) and g.u, for trials the objective limits
+        // (taken before any trial overwrites the ghosted vector).
+        VectorType u_ghosted;
+        double     rhs_u = 0.;
+        if (parameters.limit_trials)
+          {
+            u_ghosted = ghosted;
+            rhs_u     = rhs * u;
+          }
         // The energy resolves a decrease only down to its round-off, and
         // that is far above eps |E| where a stiff body is barely strained
         // (psi is a difference of O(1) invariants: its error is about
@@ -405,8 +414,6 @@ namespace Signorini
                          << std::endl;
               }
           }
-        const VectorType u_ghosted(ghosted);
-        const double     rhs_u = rhs * u;
         for (unsigned int k = 0; !accepted && k <= parameters.max_backtracks; ++k)
           {
             trial = u;
