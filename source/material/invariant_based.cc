@@ -14,9 +14,9 @@ namespace Signorini
 
     template <int dim>
     bool
-    InvariantBased::evaluate_blocks(const Tensor<2, 3> &F,
-                                           Response<dim>      &response,
-                                           const bool want_derivatives) const
+    InvariantBased::evaluate_blocks(const Tensor<2, dim> &Fb,
+                                    Response<dim>        &response,
+                                    const bool want_derivatives) const
     {
       // In plane strain (dim = 2) F = diag(F2, 1): every quantity below is
       // block diagonal with a 1 in the out-of-plane corner, so only the
@@ -24,10 +24,6 @@ namespace Signorini
       // C : C = C2 : C2 + 1, J = det F2). The values are those of the 3D
       // formulas on the embedded F; their last bits may differ, as the
       // sums are taken in another order. In 3D, Fb is F.
-      Tensor<2, dim> Fb;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          Fb[i][j] = F[i][j];
       const double J = determinant(Fb);
       if (!(J > 0.) || !std::isfinite(J))
         return false;
@@ -126,7 +122,7 @@ namespace Signorini
                                           Response<2>        &response,
                                           const bool want_derivatives) const
     {
-      return evaluate_blocks<2>(embed(F), response, want_derivatives);
+      return evaluate_blocks<2>(F, response, want_derivatives);
     }
   } // namespace Material
 } // namespace Signorini

@@ -69,12 +69,14 @@ namespace Signorini
                        const bool want_derivatives) const = 0;
 
     private:
-      /// evaluate() at the 3D @p F, keeping the dim x dim blocks of P, A.
+      /// evaluate() at the in-plane block @p Fb of F (in 3D, F itself;
+      /// in plane strain F = diag(Fb, 1)), keeping the dim x dim blocks of
+      /// P and A.
       template <int dim>
       bool
-      evaluate_blocks(const Tensor<2, 3> &F,
-                      Response<dim>      &response,
-                      const bool          want_derivatives) const;
+      evaluate_blocks(const Tensor<2, dim> &Fb,
+                      Response<dim>        &response,
+                      const bool            want_derivatives) const;
     };
 
     /**
