@@ -16,12 +16,16 @@
 //   automatic choice), scotch (not in Debian's parallel MUMPS) reports the
 //   one MUMPS took instead, with KLU's answers;
 // - Amesos_Mumps gives KLU's answers too (also on 2 ranks);
+// - with two unknowns per node of one pattern MUMPS orders the graph of the
+//   nodes (ICNTL(15) = -2), with KLU's answers; not for the Laplacian;
 // - CHOLMOD refuses the indefinite matrix as not positive definite (one
 //   rank only: the 2-rank output has no CHOLMOD lines).
 
 #include <signorini/solvers/linear_solver.h>
 
 #include "shifted_laplacian.h"
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
 #include <cmath>
@@ -229,6 +233,57 @@ main(int argc, char **argv)
     if (root)
       std::cerr << "Amesos_Mumps: " << amesos.message << " largest difference "
                 << amesos.worst << "\n";
+  }
+
+  {
+    // Two unknowns per node with one pattern (a 2D vector field): MUMPS
+    // orders the graph of the 80 nodes (ICNTL(15) = -2), with KLU's answers.
+    // The 1D Laplacian above has no such blocks (81 unknowns).
+    constexpr unsigned int nodes = 80, m = 2 * nodes;
+    const unsigned int     ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int     rank  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    IndexSet               owned(m);
+    owned.add_range(2 * (rank * nodes / ranks), 2 * ((rank + 1) * nodes / ranks));
+    DynamicSparsityPattern pattern(m, m, owned);
+    for (const auto i : owned)
+      for (unsigned int node = (i / 2 > 0 ? i / 2 - 1 : 0);
+           node <= std::min(nodes - 1, i / 2 + 1);
+           ++node)
+        for (unsigned int c = 0; c < 2; ++c)
+          pattern.add(i, 2 * node + c);
+    MatrixType A;
+    A.reinit(owned, owned, pattern, MPI_COMM_WORLD);
+    for (const auto i : owned)
+      for (unsigned int node = (i / 2 > 0 ? i / 2 - 1 : 0);
+           node <= std::min(nodes - 1, i / 2 + 1);
+           ++node)
+        for (unsigned int c = 0; c < 2; ++c)
+          A.set(i, 2 * node + c,
+                (node == i / 2 ? 2.1 : -1.) * (c == i % 2 ? 2. : 0.5));
+    A.compress(VectorOperation::insert);
+    VectorType rhs(owned, MPI_COMM_WORLD), x(rhs), reference(rhs);
+    for (const auto i : owned)
+      rhs[i] = std::cos(0.3 * i);
+    rhs.compress(VectorOperation::insert);
+    LinearSolver       mumps(Trial::parameters("PETSc_Mumps")),
+      klu(Trial::parameters("Amesos_Klu"));
+    LinearSolver::Info info;
+    std::string        message;
+    const bool solved = mumps.solve(A, x, rhs, info, message) &&
+                        klu.solve(A, reference, rhs, info, message);
+    Trial laplacian("PETSc_Mumps", b);
+    laplacian.solve(1, 0.1);
+    const double blocked_difference = difference(x, reference);
+    say("PETSc_Mumps: the graph of the nodes is ordered for two unknowns per "
+        "node (and not for the 1D Laplacian), with Amesos_Klu's solution to "
+        "1e-12",
+        solved && mumps.ordering_block() == 2 &&
+          laplacian.solver.ordering_block() == 1 &&
+          blocked_difference < 1e-12);
+    if (root)
+      std::cerr << "PETSc_Mumps node blocks: " << mumps.ordering_block() << " and "
+                << laplacian.solver.ordering_block() << ", difference "
+                << blocked_difference << "\n";
   }
 
   if (one_rank)

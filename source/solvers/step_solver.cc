@@ -33,7 +33,13 @@ namespace Signorini
     // Only what a restarted run reports alike (the counts of analyses and
     // factorisations start again at a restart, so they are not here).
     if (const std::string ordering = linear_solver.ordering_used(); !ordering.empty())
-      summary["solver"]["ordering"] = ordering;
+      {
+        // "pord on node blocks of 2": MUMPS ordered the graph of the nodes
+        // (2 or 3 unknowns each), not that of the unknowns.
+        const int block = linear_solver.ordering_block();
+        summary["solver"]["ordering"] =
+          ordering + (block > 1 ? " on node blocks of " + std::to_string(block) : "");
+      }
   }
 
   namespace

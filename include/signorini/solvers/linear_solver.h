@@ -150,6 +150,11 @@ namespace Signorini
     std::string
     ordering_used() const;
 
+    /// The node block size of that analysis (PETScDirectSolver::
+    /// ordering_block()), or -1.
+    int
+    ordering_block() const;
+
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
      * failed; @p message says why.

@@ -92,6 +92,17 @@ namespace Signorini
       return ordering;
     }
 
+    /**
+     * The size of the node blocks (2 or 3 unknowns of one pattern) whose
+     * graph MUMPS ordered in its last analysis (ICNTL(15)), 1 if it ordered
+     * the unknowns' graph, or -1 (CHOLMOD, or no analysis yet).
+     */
+    int
+    ordering_block() const
+    {
+      return block;
+    }
+
     /// The name of the package and its factorisation, for summaries.
     static std::string
     name(Package package);
@@ -105,5 +116,6 @@ namespace Signorini
     unsigned int           n_numeric  = 0;
     int                    negative   = -1;
     int                    ordering   = -1;
+    int                    block      = -1;
   };
 } // namespace Signorini
