@@ -119,7 +119,8 @@ main()
   const std::vector<std::string> hertz = {"contact_force_x", "contact_force_y",
                                           "hertz_a", "hertz_p0", "hertz_p0_fit"};
   const std::vector<Case>        cases = {
-    {"hertz", "default.prm", coarse_hertz, 2, hertz, 25},
+    // 10 measured; 12 with the former warm start barrier of 1e-6.
+    {"hertz", "default.prm", coarse_hertz, 2, hertz, 11},
     {"groove", "hertz_groove.prm", coarse_groove, 2, hertz, 15},
     {"ssnv187_2d", "ssnv187_plane.prm", "", 2, {"top_uy", "contact_force_y"}, 15},
     {"ssnv187_3d", "ssnv187_plane.prm", plane_3d, 3, {"top_uz", "contact_force_z"}, 15}};
