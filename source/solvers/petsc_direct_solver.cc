@@ -104,7 +104,7 @@ namespace Signorini
     std::vector<PetscInt> columns;
     std::vector<int>      row_start;
     /// Unknowns in blocks of this size with one pattern, on every rank
-    /// (node_block_size()); MUMPS then orders the graph of the blocks.
+    /// (node_blocks()); MUMPS then orders the graph of the blocks.
     int block = 1;
 
     ~State()
