@@ -14,7 +14,9 @@
 //   ELAS_HYPER with C20, Mooney-Rivlin; no contact, the J = 1 constraints
 //   by the augmented Lagrangian): the top displacement and the reaction as
 //   Ipopt's to 1e-6, the top displacement within 0.05% of the analytic
-//   value, and on 2 ranks as on 1 to 1e-8.
+//   value, and on 2 ranks as on 1 to 1e-8;
+// - the active-set polish (prm/hertz_peer.prm): fewer iterations than
+//   without it, the same answers to 1e-8.
 
 #include "run_output.h"
 
@@ -151,6 +153,34 @@ main()
       out << c.name << ": iterations <= " << c.max_iterations << ": "
           << verdict(iterations <= c.max_iterations) << "\n";
     }
+
+  // The active-set polish on the peer's scene (9618 DoFs), where a node at
+  // the edge of the contact zone has a vanishing gap and force: fewer
+  // iterations than without (measured 6 against 7), the same quantities
+  // and contact node positions to 1e-8, no penetration beyond 1e-8 h.
+  {
+    const std::string polish_off = "subsection Solver\n  subsection Interior point\n"
+                                   "    set Active-set polish = false\n  end\nend\n";
+    const bool ran =
+      RunOutput::run_scene("peer_polish", "hertz_peer.prm", method("interior-point")) == 0 &&
+      RunOutput::run_scene("peer_plain", "hertz_peer.prm",
+                           method("interior-point") + polish_off) == 0;
+    out << "peer: with and without the active-set polish converged: " << verdict(ran)
+        << "\n";
+    const double with    = summary_value("peer_polish", "interior_point iterations");
+    const double without = summary_value("peer_plain", "interior_point iterations");
+    const double dq      = quantity_difference("peer_polish", "peer_plain", hertz);
+    const double dx      = position_difference("peer_polish", "peer_plain", 2);
+    const double pen     = summary_value("peer_polish", "max penetration over h");
+    std::cerr << "peer polish: iterations " << with << " against " << without
+              << ", quantities " << dq << ", positions " << dx << ", penetration " << pen
+              << "\n";
+    out << "peer: fewer iterations with the polish: " << verdict(with < without) << "\n"
+        << "peer: the same quantities and positions to 1e-8: "
+        << verdict(dq <= 1e-8 && dx <= 1e-8) << "\n"
+        << "peer: max penetration <= 1e-8 h with the polish: " << verdict(pen <= 1e-8)
+        << "\n";
+  }
 
   // Incompressible SSNV187: no contact, J = 1 per cell.
   const std::string c20 = "subsection Body 1\n  subsection Material\n"

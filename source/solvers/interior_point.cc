@@ -57,6 +57,22 @@ namespace Signorini
                       "Start every load step after the first from the "
                       "previous step's multipliers (the displacement always "
                       "starts from the previous step).");
+    prm.declare_entry("Active-set polish",
+                      "true",
+                      Patterns::Bool(),
+                      "Once max s_k z_k <= 1e-4 force scale * h, try to finish "
+                      "the load step with Newton steps on the active set the "
+                      "iterate shows (gaps pinned to zero where z_k / F > "
+                      "s_k / h, the other nodes free, at most 3 steps), and "
+                      "keep the result only if it meets the tolerances with "
+                      "no penetration and no negative force; each distinct "
+                      "active set is tried once; with a direct linear solver "
+                      "only (the stiff penalty slows CG + AMG down). A node "
+                      "at the edge of the "
+                      "contact zone whose gap and force both vanish otherwise "
+                      "makes the last iterations converge only linearly: "
+                      "prm/hertz_peer.prm at 202 692 DoFs, 8 -> 6 "
+                      "factorisations (doc/performance.md).");
     prm.declare_entry("Armijo parameter",
                       "1e-4",
                       Patterns::Double(0., 1.),
@@ -106,6 +122,7 @@ namespace Signorini
     warm_start_barrier     = prm.get_double("Warm start barrier");
     initial_slack          = prm.get_double("Initial slack");
     warm_start             = prm.get_bool("Warm start");
+    active_set_polish      = prm.get_bool("Active-set polish");
     armijo_c1              = prm.get_double("Armijo parameter");
     max_backtracks         = prm.get_integer("Maximum backtracks");
     initial_regularization = prm.get_double("Initial regularization");
@@ -294,6 +311,136 @@ namespace Signorini
       return min(alpha);
     };
 
+    // Active-set polish (see 'Active-set polish'): up to 3 Newton steps on
+    // E with the gaps of the pinned nodes held at zero by a stiff penalty
+    // rho (its multiplier estimate z - rho (g + grad g . du) would lose
+    // digits, so the forces come from equilibrium instead: z_k = grad E .
+    // grad g_k / |grad g_k|^2 at the node) and the other nodes free. Kept,
+    // with z of the free nodes zero and s = max(g, 0), if the dual residual
+    // is at most tol F, no node penetrates by more than tol h and no pinned
+    // force is negative; otherwise u is restored and the iteration goes on.
+    // Returns whether it was kept; stats then hold the result.
+    std::vector<char> last_polished;
+    auto polish = [&](const std::vector<char> &pinned, const unsigned int it) {
+      const VectorType    u_start(u);
+      std::vector<double> zp(n, 0.);
+      for (unsigned int k = 0; k < n; ++k)
+        if (pinned[k])
+          zp[k] = z[k];
+      double max_diagonal = 0.;
+      for (const auto i : u.locally_owned_elements())
+        max_diagonal = std::max(max_diagonal, std::abs(K.diag_element(i)));
+      const double rho = 1e6 * max(max_diagonal);
+      VectorType   b_p(rhs), du(rhs), residual(rhs), forces(ghosted);
+      bool         kept = false;
+      unsigned int steps = 0;
+      double       r     = 0.;
+      for (; steps < 3 && !kept;)
+        {
+          {
+            TimerOutput::Scope scope(timer, "assembly");
+            b_p = rhs;
+            for (unsigned int k = 0; k < n; ++k)
+              if (pinned[k])
+                {
+                  for (unsigned int i = 0; i < dim; ++i)
+                    {
+                      dofs[i]  = nodes[k].dofs[i];
+                      local(i) = (zp[k] - rho * state[k].g) * state[k].grad[i];
+                      for (unsigned int j = 0; j < dim; ++j)
+                        block(i, j) = -zp[k] * state[k].hess[i][j] +
+                                      rho * state[k].grad[i] * state[k].grad[j];
+                    }
+                  constraints.distribute_local_to_global(block, local, dofs, K, b_p);
+                }
+            K.compress(VectorOperation::add);
+            b_p.compress(VectorOperation::add);
+          }
+          bool solved = false;
+          {
+            TimerOutput::Scope scope(timer, "linear solve");
+            LinearSolver::Info info;
+            std::string        message;
+            du     = 0.;
+            solved = stats.count_linear_solve(
+              linear_solver.solve(K, du, b_p, info, message), info, message);
+          }
+          ++steps;
+          if (!solved)
+            break;
+          constraints.distribute(du);
+          u.add(1., du);
+          full_evaluation();
+          evaluate_constraints(ghosted, state);
+          if (!e.admissible)
+            break;
+          // Forces from equilibrium (rhs = -grad E), the dual residual.
+          forces = rhs;
+          residual = rhs;
+          double penetration = 0., free_penetration = 0., negative = 0.;
+          for (unsigned int k = 0; k < n; ++k)
+            if (active[k])
+              {
+                penetration = std::max(penetration, -state[k].g);
+                if (!pinned[k])
+                  {
+                    free_penetration = std::max(free_penetration, -state[k].g);
+                    zp[k]            = 0.;
+                    continue;
+                  }
+                double along = 0., norm2 = 0.;
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    along -= forces[nodes[k].dofs[i]] * state[k].grad[i];
+                    norm2 += state[k].grad[i] * state[k].grad[i];
+                  }
+                zp[k]    = along / norm2;
+                negative = std::max(negative, -zp[k]);
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    dofs[i]  = nodes[k].dofs[i];
+                    local(i) = zp[k] * state[k].grad[i];
+                  }
+                constraints.distribute_local_to_global(local, dofs, residual);
+              }
+          residual.compress(VectorOperation::add);
+          r           = residual.l2_norm();
+          penetration      = max(penetration);
+          free_penetration = max(free_penetration);
+          negative         = max(negative);
+          progress << "      active-set polish step " << steps << ": |r_d|/F "
+                   << std::scientific << std::setprecision(3) << r / F
+                   << ", largest penetration / h " << penetration / h
+                   << ", most negative force / F " << -negative / F << std::endl;
+          // A free node in the foundation or a pinned node pulling: the
+          // active set is not the solution's. The pinned gaps reach zero
+          // as the forces converge (the penalty holds them to r / rho).
+          if (free_penetration > parameters.tolerance * h || negative > 0.)
+            break;
+          kept = r <= parameters.tolerance * F && penetration <= parameters.tolerance * h;
+        }
+      if (!kept)
+        {
+          progress << "      active-set polish not kept" << std::endl;
+          u = u_start;
+          full_evaluation();
+          evaluate_constraints(ghosted, state);
+          return false;
+        }
+      for (unsigned int k = 0; k < n; ++k)
+        if (active[k])
+          {
+            z[k] = zp[k];
+            s[k] = std::max(state[k].g, 0.);
+          }
+      stats.iterations = it + steps;
+      stats.residual   = r;
+      stats.evaluation = e;
+      stats.converged  = true;
+      warm             = true;
+      return true;
+    };
+
     std::vector<double> c(n, 0.), ds_aff(n, 0.), dz_aff(n, 0.);
     double              nu = 0.; // the merit function's penalty on |g - s|
     double              mu = mu_0;
@@ -352,6 +499,25 @@ namespace Signorini
             mu_last         = mu_avg;
             warm            = true;
             return stats;
+          }
+        // Active-set polish: Newton steps on the active set the iterate
+        // shows, kept only if they meet every tolerance (header).
+        if (parameters.active_set_polish && n_constraints > 0 &&
+            linear_solver.get_parameters().type == LinearSolver::Parameters::Type::direct &&
+            complementarity <= 1e-4 * unit && primal <= tol * h)
+          {
+            std::vector<char> pinned(n, 0);
+            for (unsigned int k = 0; k < n; ++k)
+              pinned[k] = active[k] && z[k] / F > s[k] / h;
+            if (pinned != last_polished)
+              {
+                last_polished = pinned;
+                if (polish(pinned, it))
+                  {
+                    mu_last = mu_avg;
+                    return stats;
+                  }
+              }
           }
         if (it == parameters.max_iterations)
           {

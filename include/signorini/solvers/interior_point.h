@@ -24,9 +24,10 @@ namespace Signorini
     double       tolerance              = 1e-10;
     unsigned int max_iterations         = 100;
     double       initial_barrier        = 1e-1;
-    double       warm_start_barrier     = 1e-6;
+    double       warm_start_barrier     = 1e-3;
     double       initial_slack          = 1e-2;
     bool         warm_start             = true;
+    bool         active_set_polish      = true;
     double       armijo_c1              = 1e-4;
     unsigned int max_backtracks         = 30;
     double       initial_regularization = 1e-8;
