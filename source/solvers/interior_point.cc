@@ -311,6 +311,30 @@ namespace Signorini
       return min(alpha);
     };
 
+    // out = -grad E + sum_k f_k grad g_k (at the current state): the dual
+    // residual for the multipliers f (zero off the active nodes).
+    auto dual_residual = [&](const std::vector<double> &f, VectorType &out) {
+      out = rhs;
+      for (unsigned int k = 0; k < n; ++k)
+        if (active[k])
+          {
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                dofs[i]  = nodes[k].dofs[i];
+                local(i) = f[k] * state[k].grad[i];
+              }
+            constraints.distribute_local_to_global(local, dofs, out);
+          }
+      out.compress(VectorOperation::add);
+    };
+    // max_i |K_ii| over all ranks.
+    auto largest_diagonal = [&]() {
+      double largest = 0.;
+      for (const auto i : u.locally_owned_elements())
+        largest = std::max(largest, std::abs(K.diag_element(i)));
+      return max(largest);
+    };
+
     // Active-set polish (see 'Active-set polish'): up to 3 Newton steps on
     // E with the gaps of the pinned nodes held at zero by a stiff penalty
     // rho (its multiplier estimate z - rho (g + grad g . du) would lose
@@ -327,15 +351,12 @@ namespace Signorini
       for (unsigned int k = 0; k < n; ++k)
         if (pinned[k])
           zp[k] = z[k];
-      double max_diagonal = 0.;
-      for (const auto i : u.locally_owned_elements())
-        max_diagonal = std::max(max_diagonal, std::abs(K.diag_element(i)));
-      const double rho = 1e6 * max(max_diagonal);
+      const double rho = 1e6 * largest_diagonal();
       VectorType   b_p(rhs), du(rhs), residual(rhs), forces(ghosted);
       bool         kept = false;
       unsigned int steps = 0;
       double       r     = 0.;
-      for (; steps < 3 && !kept;)
+      while (steps < 3 && !kept)
         {
           {
             TimerOutput::Scope scope(timer, "assembly");
@@ -374,9 +395,8 @@ namespace Signorini
           evaluate_constraints(ghosted, state);
           if (!e.admissible)
             break;
-          // Forces from equilibrium (rhs = -grad E), the dual residual.
+          // Forces from equilibrium (rhs = -grad E), then the dual residual.
           forces = rhs;
-          residual = rhs;
           double penetration = 0., free_penetration = 0., negative = 0.;
           for (unsigned int k = 0; k < n; ++k)
             if (active[k])
@@ -396,15 +416,9 @@ namespace Signorini
                   }
                 zp[k]    = along / norm2;
                 negative = std::max(negative, -zp[k]);
-                for (unsigned int i = 0; i < dim; ++i)
-                  {
-                    dofs[i]  = nodes[k].dofs[i];
-                    local(i) = zp[k] * state[k].grad[i];
-                  }
-                constraints.distribute_local_to_global(local, dofs, residual);
               }
-          residual.compress(VectorOperation::add);
-          r           = residual.l2_norm();
+          dual_residual(zp, residual);
+          r                = residual.l2_norm();
           penetration      = max(penetration);
           free_penetration = max(free_penetration);
           negative         = max(negative);
@@ -449,18 +463,7 @@ namespace Signorini
         Interruption::throw_if_requested(comm);
 
         // Residuals at the current iterate.
-        dual = rhs;
-        for (unsigned int k = 0; k < n; ++k)
-          if (active[k])
-            {
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  dofs[i]  = nodes[k].dofs[i];
-                  local(i) = z[k] * state[k].grad[i];
-                }
-              constraints.distribute_local_to_global(local, dofs, dual);
-            }
-        dual.compress(VectorOperation::add);
+        dual_residual(z, dual);
         double primal = 0., complementarity = 0., gap = 0.;
         for (unsigned int k = 0; k < n; ++k)
           if (active[k])
@@ -576,10 +579,7 @@ namespace Signorini
         double       delta  = 0.;
         if (!solved)
           {
-            double max_diagonal = 0.;
-            for (const auto i : u.locally_owned_elements())
-              max_diagonal = std::max(max_diagonal, std::abs(K.diag_element(i)));
-            max_diagonal = max(max_diagonal);
+            const double max_diagonal = largest_diagonal();
             double tau   = std::max(parameters.initial_regularization,
                                   last_regularization / 3.);
             for (unsigned int r = 0; r < parameters.max_regularizations && !solved;
