@@ -1,4 +1,5 @@
 #include <signorini/driver/checkpoint.h>
+#include <signorini/driver/mpi_environment.h>
 #include <signorini/driver/run.h>
 #include <signorini/driver/study.h>
 #include <signorini/input_error.h>
@@ -385,6 +386,9 @@ namespace Signorini
               const bool                                 quiet,
               const std::function<void(const Report &)> &on_report)
   {
+    // Open MPI settings that only save start-up time, unless the user
+    // chose otherwise (driver/mpi_environment.h); summary.json lists them.
+    MpiEnvironment::prepare();
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     // deal.II prints exceptions to stderr when they are created in debug

@@ -1,0 +1,170 @@
+#include <signorini/driver/mpi_environment.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace Signorini
+{
+  namespace MpiEnvironment
+  {
+    namespace
+    {
+      /// The parameters the decision reads.
+      const char *const names[] = {"mtl", "pml", "ess_singleton_isolated"};
+
+      /// The matching-transport components that drive RDMA adapters only.
+      const std::vector<std::string> rdma_transports = {"psm", "psm2", "ofi"};
+
+      std::string
+      trimmed(const std::string &text)
+      {
+        const auto first = text.find_first_not_of(" \t\r");
+        if (first == std::string::npos)
+          return "";
+        const auto last = text.find_last_not_of(" \t\r");
+        return text.substr(first, last - first + 1);
+      }
+
+      std::vector<std::string>
+      split(const std::string &text, const char separator)
+      {
+        std::vector<std::string> parts;
+        std::istringstream       in(text);
+        for (std::string part; std::getline(in, part, separator);)
+          if (!trimmed(part).empty())
+            parts.push_back(trimmed(part));
+        return parts;
+      }
+
+      /// The files Open MPI reads its parameters from, first ones first.
+      std::vector<std::string>
+      parameter_files()
+      {
+        if (const char *files = std::getenv("OMPI_MCA_mca_base_param_files"))
+          return split(files, ':');
+        std::vector<std::string> files;
+        if (const char *home = std::getenv("HOME"))
+          files.push_back(std::string(home) + "/.openmpi/mca-params.conf");
+        files.push_back("/etc/openmpi/openmpi-mca-params.conf");
+        return files;
+      }
+
+      /// The value a parameter file gives to @p name, "" if none.
+      std::string
+      value_in_file(const std::string &file, const std::string &name)
+      {
+        std::ifstream in(file);
+        for (std::string line; std::getline(in, line);)
+          {
+            line = trimmed(line.substr(0, line.find('#')));
+            const auto equals = line.find('=');
+            if (equals != std::string::npos &&
+                trimmed(line.substr(0, equals)) == name)
+              return trimmed(line.substr(equals + 1));
+          }
+        return "";
+      }
+
+      std::string &
+      applied_settings()
+      {
+        static std::string text;
+        return text;
+      }
+    } // namespace
+
+    Facts
+    facts_of_this_process()
+    {
+      Facts facts;
+      facts.launched = std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr ||
+                       std::getenv("PMIX_RANK") != nullptr ||
+                       std::getenv("PMI_RANK") != nullptr;
+      std::error_code error;
+      const std::filesystem::path rdma("/sys/class/infiniband");
+      facts.rdma_device = std::filesystem::exists(rdma, error) &&
+                          !std::filesystem::is_empty(rdma, error);
+      const std::vector<std::string> files = parameter_files();
+      for (const std::string name : names)
+        {
+          if (const char *value = std::getenv(("OMPI_MCA_" + name).c_str()))
+            {
+              facts.values[name] = trimmed(value);
+              continue;
+            }
+          for (const auto &file : files)
+            {
+              const std::string value = value_in_file(file, name);
+              if (!value.empty())
+                {
+                  facts.values[name] = value;
+                  break;
+                }
+            }
+        }
+      return facts;
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    settings(const Facts &facts)
+    {
+      std::vector<std::pair<std::string, std::string>> result;
+      const auto value = [&facts](const std::string &name) -> std::string {
+        const auto it = facts.values.find(name);
+        return it == facts.values.end() ? std::string() : it->second;
+      };
+
+      // Transports: only without an adapter, and only where nobody chose
+      // the transports themselves (a list without '^').
+      const std::string pml = value("pml");
+      const std::string mtl = value("mtl");
+      if (!facts.rdma_device && (pml.empty() || pml[0] == '^') &&
+          (mtl.empty() || mtl[0] == '^'))
+        {
+          std::vector<std::string> excluded =
+            mtl.empty() ? std::vector<std::string>() : split(mtl.substr(1), ',');
+          bool widened = false;
+          for (const auto &component : rdma_transports)
+            if (std::find(excluded.begin(), excluded.end(), component) ==
+                excluded.end())
+              {
+                excluded.push_back(component);
+                widened = true;
+              }
+          if (widened)
+            {
+              std::string list = "^";
+              for (const auto &component : excluded)
+                list += (list.size() > 1 ? "," : "") + component;
+              result.emplace_back("mtl", list);
+            }
+        }
+
+      if (!facts.launched && value("ess_singleton_isolated").empty())
+        result.emplace_back("ess_singleton_isolated", "1");
+      return result;
+    }
+
+    std::string
+    prepare()
+    {
+      std::string text;
+      for (const auto &[name, value] : settings(facts_of_this_process()))
+        {
+          setenv(("OMPI_MCA_" + name).c_str(), value.c_str(), /*overwrite=*/1);
+          text += (text.empty() ? "" : " ") + name + "=" + value;
+        }
+      applied_settings() = text;
+      return text;
+    }
+
+    const std::string &
+    applied()
+    {
+      return applied_settings();
+    }
+  } // namespace MpiEnvironment
+} // namespace Signorini
