@@ -1,7 +1,7 @@
 // The Open MPI settings the program makes before MPI_Init
 // (driver/mpi_environment.h): which it makes for which facts, that a
 // user's choice wins, that an exclusion list (Debian's own `mtl = ^ofi`)
-// is widened and a chosen transport kept, and that the facts are read
+// is widened and a chosen component kept, and that the facts are read
 // from the environment and from a parameter file.
 
 #include <signorini/driver/mpi_environment.h>
@@ -53,6 +53,10 @@ main()
   print("pml = ^ucx", facts(true, false, {{"pml", "^ucx"}}));
   print("user set ess_singleton_isolated = 0",
         facts(false, false, {{"ess_singleton_isolated", "0"}}));
+  print("sharedfp = ^lockedfile, no mpirun",
+        facts(false, false, {{"sharedfp", "^lockedfile"}}));
+  print("user chose sharedfp = sm, no mpirun",
+        facts(false, false, {{"sharedfp", "sm"}}));
 
   // The facts of this process: an environment variable, and a parameter
   // file named by OMPI_MCA_mca_base_param_files (comments and blanks as
@@ -64,6 +68,7 @@ main()
   setenv("OMPI_MCA_mtl", "psm2", 1);
   unsetenv("OMPI_MCA_pml");
   unsetenv("OMPI_MCA_ess_singleton_isolated");
+  unsetenv("OMPI_MCA_sharedfp");
   const auto here = MpiEnvironment::facts_of_this_process();
   for (const auto &[name, value] : here.values)
     std::cout << "read " << name << " = " << value << '\n';
@@ -79,6 +84,9 @@ main()
   std::cout << "prepare() == applied(): " << (applied == MpiEnvironment::applied())
             << '\n';
   const char *isolated = std::getenv("OMPI_MCA_ess_singleton_isolated");
+  const char *sharedfp = std::getenv("OMPI_MCA_sharedfp");
   std::cout << "ess_singleton_isolated in the environment: "
-            << (isolated ? isolated : "(unset)") << '\n';
+            << (isolated ? isolated : "(unset)") << '\n'
+            << "sharedfp in the environment: " << (sharedfp ? sharedfp : "(unset)")
+            << '\n';
 }

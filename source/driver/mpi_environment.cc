@@ -13,7 +13,7 @@ namespace Signorini
     namespace
     {
       /// The parameters the decision reads.
-      const char *const names[] = {"mtl", "pml", "ess_singleton_isolated"};
+      const char *const names[] = {"mtl", "pml", "ess_singleton_isolated", "sharedfp"};
 
       /// The matching-transport components that drive RDMA adapters only.
       const std::vector<std::string> rdma_transports = {"psm", "psm2", "ofi"};
@@ -117,34 +117,46 @@ namespace Signorini
         return it == facts.values.end() ? std::string() : it->second;
       };
 
-      // Transports: only without an adapter, and only where nobody chose
-      // the transports themselves (a list without '^').
-      const std::string pml = value("pml");
-      const std::string mtl = value("mtl");
-      if (!facts.rdma_device && (pml.empty() || pml[0] == '^') &&
-          (mtl.empty() || mtl[0] == '^'))
-        {
-          std::vector<std::string> excluded =
-            mtl.empty() ? std::vector<std::string>() : split(mtl.substr(1), ',');
-          bool widened = false;
-          for (const auto &component : rdma_transports)
-            if (std::find(excluded.begin(), excluded.end(), component) ==
-                excluded.end())
-              {
-                excluded.push_back(component);
-                widened = true;
-              }
-          if (widened)
+      // An exclusion list for @p name that also names @p components: set
+      // when nothing is set, widened when an exclusion list ('^...') is,
+      // left alone when the user chose components (a list without '^').
+      const auto exclude = [&](const std::string              &name,
+                               const std::vector<std::string> &components) {
+        const std::string current = value(name);
+        if (!current.empty() && current[0] != '^')
+          return;
+        std::vector<std::string> excluded =
+          current.empty() ? std::vector<std::string>() : split(current.substr(1), ',');
+        bool widened = false;
+        for (const auto &component : components)
+          if (std::find(excluded.begin(), excluded.end(), component) == excluded.end())
             {
-              std::string list = "^";
-              for (const auto &component : excluded)
-                list += (list.size() > 1 ? "," : "") + component;
-              result.emplace_back("mtl", list);
+              excluded.push_back(component);
+              widened = true;
             }
-        }
+        if (!widened)
+          return;
+        std::string list = "^";
+        for (const auto &component : excluded)
+          list += (list.size() > 1 ? "," : "") + component;
+        result.emplace_back(name, list);
+      };
 
+      // Transports: only without an adapter, and only where nobody chose
+      // the point-to-point layer itself (pml = cm, ob1, ...).
+      const std::string pml = value("pml");
+      if (!facts.rdma_device && (pml.empty() || pml[0] == '^'))
+        exclude("mtl", rdma_transports);
+
+      // Without the daemon there is no session directory, where the
+      // shared-memory shared-file-pointer component of MPI-IO keeps its
+      // files: it would print an error at every file HDF5 output or a
+      // checkpoint opens. One process needs no shared memory for it.
       if (!facts.launched && value("ess_singleton_isolated").empty())
-        result.emplace_back("ess_singleton_isolated", "1");
+        {
+          result.emplace_back("ess_singleton_isolated", "1");
+          exclude("sharedfp", {"sm"});
+        }
       return result;
     }
 

@@ -23,14 +23,17 @@ namespace Signorini
    * - `ess_singleton_isolated = 1` when the program was started without
    *   mpirun: Open MPI then does not fork its supporting daemon (orted),
    *   which a process needs only to spawn others; the program never does.
+   *   Then also `sharedfp = ^sm`: that MPI-IO component keeps its files in
+   *   the daemon's session directory and printed an error for every file
+   *   HDF5 output or a checkpoint opened; one process does not need it.
    *
    * The user's choices win. Open MPI reads a parameter from the
    * environment (OMPI_MCA_<name>) before its parameter files
    * ($HOME/.openmpi/mca-params.conf, then /etc/openmpi/openmpi-mca-params.conf,
    * or the files OMPI_MCA_mca_base_param_files names); the first value
-   * found there is the one kept, except that an exclusion list for mtl
-   * (Debian's own file says `mtl = ^ofi`) is widened by the three
-   * components, never narrowed. A chosen list of transports (mtl = psm2,
+   * found there is the one kept, except that an exclusion list (Debian's
+   * own file says `mtl = ^ofi`) is widened by the components above, never
+   * narrowed. A chosen list of transports (mtl = psm2,
    * or pml = cm, ...) is left as it is. Other MPI implementations ignore
    * OMPI_MCA_ variables.
    */
@@ -43,8 +46,9 @@ namespace Signorini
       bool launched = false;
       /// The machine shows an RDMA device.
       bool rdma_device = false;
-      /// The values of mtl, pml and ess_singleton_isolated that the
-      /// environment or the parameter files set (name without OMPI_MCA_).
+      /// The values of mtl, pml, ess_singleton_isolated and sharedfp that
+      /// the environment or the parameter files set (name without
+      /// OMPI_MCA_).
       std::map<std::string, std::string> values;
     };
 
