@@ -15,8 +15,8 @@
 //   by the augmented Lagrangian): the top displacement and the reaction as
 //   Ipopt's to 1e-6, the top displacement within 0.05% of the analytic
 //   value, and on 2 ranks as on 1 to 1e-8;
-// - the active-set polish (prm/hertz_peer.prm): fewer iterations than
-//   without it, the same answers to 1e-8.
+// - the active-set polish (prm/hertz_peer.prm): at least 2 fewer iterations
+//   than without it, the same answers to 1e-8.
 
 #include "run_output.h"
 
@@ -155,8 +155,9 @@ main()
     }
 
   // The active-set polish on the peer's scene (9618 DoFs), where a node at
-  // the edge of the contact zone has a vanishing gap and force: fewer
-  // iterations than without (measured 6 against 7), the same quantities
+  // the edge of the contact zone has a vanishing gap and force: at least 2
+  // fewer iterations than without (measured 5 against 7; 6 when every
+  // polish step refactorised, before its chord steps), the same quantities
   // and contact node positions to 1e-8, no penetration beyond 1e-8 h.
   {
     const std::string polish_off = "subsection Solver\n  subsection Interior point\n"
@@ -175,7 +176,8 @@ main()
     std::cerr << "peer polish: iterations " << with << " against " << without
               << ", quantities " << dq << ", positions " << dx << ", penetration " << pen
               << "\n";
-    out << "peer: fewer iterations with the polish: " << verdict(with < without) << "\n"
+    out << "peer: at least 2 fewer iterations with the polish: "
+        << verdict(with + 2 <= without) << "\n"
         << "peer: the same quantities and positions to 1e-8: "
         << verdict(dq <= 1e-8 && dx <= 1e-8) << "\n"
         << "peer: max penetration <= 1e-8 h with the polish: " << verdict(pen <= 1e-8)
