@@ -150,8 +150,9 @@ namespace Signorini
 
       // Without the daemon there is no session directory, where the
       // shared-memory shared-file-pointer component of MPI-IO keeps its
-      // files: it would print an error at every file HDF5 output or a
-      // checkpoint opens. One process needs no shared memory for it.
+      // files: when several one-rank runs opened files at once (HDF5
+      // output, checkpoints), it printed "unable to open file for mmap"
+      // (tests/singleton_mpi_io). One process needs no shared memory.
       if (!facts.launched && value("ess_singleton_isolated").empty())
         {
           result.emplace_back("ess_singleton_isolated", "1");
