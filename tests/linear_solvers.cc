@@ -78,7 +78,8 @@ main()
   const std::vector<Scene> scenes = {
     {"hertz",
      "default.prm",
-     "subsection Mesh\n  set Global refinements = 2\nend\n",
+     "subsection Mesh\n  set Global refinements = 2\nend\n"
+     "subsection Solver\n  set Method = newton-penalty\nend\n",
      {"contact_force_y", "hertz_a", "hertz_p0", "max_penetration_over_h"}},
     {"ssnv187_3d",
      "ssnv187_3d_c20.prm",

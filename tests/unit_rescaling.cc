@@ -71,7 +71,8 @@ int
 main()
 {
   std::ofstream out("output");
-  compare("rigid", "default.prm", "",
+  compare("rigid", "default.prm",
+          "subsection Solver\n  set Method = newton-penalty\nend\n",
           "subsection Mesh\n  set Local refinement radius = 200\nend\n"
           "subsection Body 1\n  subsection Geometry\n    set Center = 0, 1000\n"
           "    set Radius = 1000\n  end\n  subsection Material\n"
