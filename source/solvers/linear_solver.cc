@@ -100,6 +100,26 @@ namespace Signorini
                       "1000",
                       Patterns::Integer(1),
                       "Iterative solvers: iteration limit.");
+    prm.declare_entry("Forcing term",
+                      "Eisenstat-Walker",
+                      Patterns::Selection("fixed|Eisenstat-Walker"),
+                      "Iterative solvers under Newton's method (the "
+                      "penalty path, a scene without contact): the "
+                      "tolerance of each Newton solve. fixed: 'Relative "
+                      "tolerance'. Eisenstat-Walker: an inexact Newton "
+                      "method; the first solve of a minimisation stops at "
+                      "'Maximum forcing term', the next ones at 0.9 "
+                      "(|g_k| / |g_k-1|)^2, tightening as the gradient "
+                      "falls and never below 'Relative tolerance', so that "
+                      "the linear solves far from the solution are cheap "
+                      "(Kelley's safeguards, doc/performance.md). The "
+                      "interior point method, the predictors and the "
+                      "direct solver keep 'Relative tolerance'.");
+    prm.declare_entry("Maximum forcing term",
+                      "0.01",
+                      Patterns::Double(0., 1.),
+                      "Eisenstat-Walker: the largest relative tolerance of a "
+                      "Newton solve (that of the first one).");
     prm.declare_entry("AMG aggregation threshold",
                       "1e-4",
                       Patterns::Double(0., 1.),
@@ -162,6 +182,14 @@ namespace Signorini
         mumps_ordering = code;
     relative_tolerance    = prm.get_double("Relative tolerance");
     max_iterations        = prm.get_integer("Maximum iterations");
+    forcing     = prm.get("Forcing term") == "Eisenstat-Walker" ?
+                    Forcing::eisenstat_walker :
+                    Forcing::fixed;
+    max_forcing = prm.get_double("Maximum forcing term");
+    if (forcing == Forcing::eisenstat_walker && max_forcing < relative_tolerance)
+      throw InputError("Solver > Linear solver > Maximum forcing term",
+                       "must be at least 'Relative tolerance' (" +
+                         prm.get("Relative tolerance") + ")");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     smoother              = prm.get("AMG smoother");
@@ -179,10 +207,45 @@ namespace Signorini
         case Type::direct:
           return "direct (" + direct_solver + ")";
         case Type::cg_amg:
-          return "CG + AMG (Trilinos ML)";
+          return std::string("CG + AMG (Trilinos ML)") +
+                 (forcing == Forcing::eisenstat_walker ?
+                    ", Eisenstat-Walker forcing" :
+                    "");
         default:
-          return "MINRES + AMG (Trilinos ML)";
+          return std::string("MINRES + AMG (Trilinos ML)") +
+                 (forcing == Forcing::eisenstat_walker ?
+                    ", Eisenstat-Walker forcing" :
+                    "");
       }
+  }
+
+  double
+  LinearSolver::forcing_term(const double residual,
+                             const double previous_residual,
+                             const double previous_forcing,
+                             const double tolerance) const
+  {
+    const double floor = parameters.relative_tolerance;
+    if (!is_iterative() ||
+        parameters.forcing != Parameters::Forcing::eisenstat_walker)
+      return floor;
+    const double eta_max = parameters.max_forcing;
+    constexpr double gamma = 0.9;
+    double eta = eta_max;
+    if (previous_residual > 0.)
+      {
+        const double ratio = residual / previous_residual;
+        eta = gamma * ratio * ratio;
+        const double kept = gamma * previous_forcing * previous_forcing;
+        if (kept > 0.1)
+          eta = std::max(eta, kept);
+        eta = std::min(eta, eta_max);
+      }
+    if (residual > 0.)
+      eta = std::min(eta_max, std::max(eta, 0.5 * tolerance / residual));
+    if (!std::isfinite(eta))
+      eta = eta_max;
+    return std::max(eta, floor);
   }
 
   LinearSolver::LinearSolver(const Parameters &parameters)
@@ -510,7 +573,8 @@ namespace Signorini
                       VectorType       &x,
                       const VectorType &b,
                       Info             &info,
-                      std::string      &message) const
+                      std::string      &message,
+                      const double      relative_tolerance) const
   {
     info                 = Info();
     x                    = 0.;
@@ -518,8 +582,11 @@ namespace Signorini
     if (parameters.type == Parameters::Type::direct)
       return solve_direct(H, x, b, message);
 
+    info.relative_tolerance = relative_tolerance > 0. ?
+                                relative_tolerance :
+                                parameters.relative_tolerance;
     SolverControl control(parameters.max_iterations,
-                          parameters.relative_tolerance * b.l2_norm());
+                          info.relative_tolerance * b.l2_norm());
     try
       {
         prepare_amg(H);

@@ -136,6 +136,7 @@ namespace Signorini
                                      MatrixType                      &hessian,
                                      const VectorType                &rhs,
                                      VectorType                      &d,
+                                     const double                     forcing,
                                      Statistics                      &statistics)
   {
     TimerOutput::Scope scope(timer, "linear solve");
@@ -153,7 +154,9 @@ namespace Signorini
     // Solve H d = -g with the current matrix: is d a descent direction?
     auto solve_for_descent = [&]() {
       if (!statistics.count_linear_solve(
-            linear_solver.solve(hessian, d, rhs, info, message), info, message))
+            linear_solver.solve(hessian, d, rhs, info, message, forcing),
+            info,
+            message))
         return false;
       constraints.distribute(d);
       // A direction that moves a DoF by more than 1000 scene sizes comes
@@ -281,6 +284,9 @@ namespace Signorini
       }
 
     double last_decrease = std::numeric_limits<double>::infinity();
+    // The inexact Newton forcing term (iterative solvers only) and the
+    // gradient norm it was chosen for.
+    double forcing = 0., forcing_residual = 0.;
     for (unsigned int it = 0;; ++it)
       {
         // A safe point for a clean stop (collective, like the iteration).
@@ -331,18 +337,30 @@ namespace Signorini
 
         const unsigned int regularized_before =
           statistics.regularized_steps + statistics.convexified_steps;
+        forcing = linear_solver.forcing_term(residual, forcing_residual, forcing,
+                                             tolerance);
+        forcing_residual = residual;
+        const unsigned int linear_before = statistics.linear_iterations;
         if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
-                               statistics))
+                               forcing, statistics))
           {
             statistics.reason = "no descent direction found" + linear_cause();
             return statistics;
           }
 
+        if (linear_solver.is_iterative())
+          progress << "      linear solve: "
+                   << statistics.linear_iterations - linear_before
+                   << " iterations to " << std::scientific << std::setprecision(1)
+                   << forcing << " |g|" << std::endl;
+
         // A correction below round-off of the geometry: nothing is left
         // to gain (the gradient is round-off, whatever its units). Only a
-        // true Newton step says so.
+        // true Newton step says so (and only one solved to the fixed
+        // tolerance: an inexact one may just be short).
         if (statistics.regularized_steps + statistics.convexified_steps ==
               regularized_before &&
+            forcing <= linear_solver.get_parameters().relative_tolerance &&
             parameters.increment_tolerance > 0. && length_scale > 0. &&
             d.linfty_norm() <= parameters.increment_tolerance * length_scale)
           {

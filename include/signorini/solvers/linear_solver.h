@@ -90,6 +90,16 @@ namespace Signorini
       std::string  smoother              = "Chebyshev";
       bool         fallback_to_direct    = true;
       NullSpace    null_space            = NullSpace::rigid_motions;
+      /// How Newton sets an iterative solve's tolerance: the fixed
+      /// 'Relative tolerance', or the Eisenstat-Walker forcing term
+      /// (forcing_term()).
+      enum class Forcing
+      {
+        fixed,
+        eisenstat_walker
+      };
+      Forcing      forcing     = Forcing::fixed;
+      double       max_forcing = 0.01;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -99,10 +109,32 @@ namespace Signorini
       name() const;
     };
 
+    /**
+     * The relative tolerance of the next Newton solve of an inexact
+     * Newton method (Eisenstat and Walker's choice 2 with the safeguards
+     * of C. T. Kelley, Iterative Methods for Linear and Nonlinear
+     * Equations, 1995, section 6.3): 'Maximum forcing term' at the first
+     * iteration (@p previous_residual <= 0), then
+     *   eta = min(eta_max, max(0.9 (|g| / |g_prev|)^2, 0.9 eta_prev^2))
+     * (the second term only where 0.9 eta_prev^2 > 0.1: no sudden
+     * tightening), and never below 0.5 @p tolerance / |g| (no solve more
+     * accurate than the Newton tolerance can use) nor below 'Relative
+     * tolerance'. With the 'fixed' forcing, or a direct solver:
+     * 'Relative tolerance'.
+     */
+    double
+    forcing_term(double residual,
+                 double previous_residual,
+                 double previous_forcing,
+                 double tolerance) const;
+
     struct Info
     {
       unsigned int iterations   = 0;
       bool         used_fallback = false;
+      /// The relative tolerance an iterative solve was asked for (0 for a
+      /// direct solve).
+      double       relative_tolerance = 0.;
     };
 
     explicit LinearSolver(const Parameters &parameters);
@@ -157,14 +189,25 @@ namespace Signorini
 
     /**
      * Solve @p H @p x = @p b. Returns false (x undefined) if the solve
-     * failed; @p message says why.
+     * failed; @p message says why. An iterative solve stops at
+     * |H x - b| <= @p relative_tolerance |b| when that is given (> 0; an
+     * inexact Newton method's forcing term), else at the parameter
+     * file's 'Relative tolerance'; a direct solve ignores it.
      */
     bool
     solve(const MatrixType &H,
           VectorType       &x,
           const VectorType &b,
           Info             &info,
-          std::string      &message) const;
+          std::string      &message,
+          double            relative_tolerance = 0.) const;
+
+    /// Whether solve() is iterative (its accuracy set by a tolerance).
+    bool
+    is_iterative() const
+    {
+      return parameters.type != Parameters::Type::direct;
+    }
 
     const Parameters &
     get_parameters() const

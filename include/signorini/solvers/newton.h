@@ -167,6 +167,7 @@ namespace Signorini
                       MatrixType                      &hessian,
                       const VectorType                &rhs,
                       VectorType                      &direction,
+                      double                           forcing,
                       Statistics                      &statistics);
 
     Parameters          parameters;
