@@ -574,7 +574,8 @@ namespace Signorini
                       const VectorType &b,
                       Info             &info,
                       std::string      &message,
-                      const double      relative_tolerance) const
+                      const double      relative_tolerance,
+                      const double      max_solution) const
   {
     info                 = Info();
     x                    = 0.;
@@ -590,14 +591,26 @@ namespace Signorini
     try
       {
         prepare_amg(H);
+        // Stops the solver at an iterate beyond max_solution (the same
+        // decision on every rank: the norm is global).
+        const auto bounded = [&](const unsigned int, const double, const VectorType &iterate) {
+          if (max_solution > 0. && iterate.linfty_norm() > max_solution)
+            {
+              info.singular = true;
+              return SolverControl::failure;
+            }
+          return SolverControl::success;
+        };
         if (parameters.type == Parameters::Type::cg_amg)
           {
             SolverCG<VectorType> cg(control);
+            cg.connect(bounded);
             cg.solve(H, x, b, *amg.preconditioner);
           }
         else
           {
             SolverMinRes<VectorType> minres(control);
+            minres.connect(bounded);
             minres.solve(H, x, b, *amg.preconditioner);
           }
         info.iterations = control.last_step();
@@ -606,7 +619,16 @@ namespace Signorini
     catch (const std::exception &e)
       {
         info.iterations = control.last_step();
-        message         = parameters.name() + " did not converge in " +
+        if (info.singular)
+          {
+            message = parameters.name() + " stopped after " +
+                      std::to_string(info.iterations) +
+                      " iterations at an iterate larger than " +
+                      std::to_string(max_solution) +
+                      ": the matrix is (nearly) singular";
+            return false;
+          }
+        message = parameters.name() + " did not converge in " +
                   std::to_string(info.iterations) + " iterations";
         if (!parameters.fallback_to_direct)
           return false;

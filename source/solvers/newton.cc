@@ -154,7 +154,8 @@ namespace Signorini
     // Solve H d = -g with the current matrix: is d a descent direction?
     auto solve_for_descent = [&]() {
       if (!statistics.count_linear_solve(
-            linear_solver.solve(hessian, d, rhs, info, message, forcing),
+            linear_solver.solve(hessian, d, rhs, info, message, forcing,
+                                1e3 * length_scale),
             info,
             message))
         return false;

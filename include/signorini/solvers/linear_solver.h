@@ -135,6 +135,8 @@ namespace Signorini
       /// The relative tolerance an iterative solve was asked for (0 for a
       /// direct solve).
       double       relative_tolerance = 0.;
+      /// An iterative solve stopped at an iterate beyond max_solution.
+      bool         singular = false;
     };
 
     explicit LinearSolver(const Parameters &parameters);
@@ -192,7 +194,13 @@ namespace Signorini
      * failed; @p message says why. An iterative solve stops at
      * |H x - b| <= @p relative_tolerance |b| when that is given (> 0; an
      * inexact Newton method's forcing term), else at the parameter
-     * file's 'Relative tolerance'; a direct solve ignores it.
+     * file's 'Relative tolerance'; a direct solve ignores it. With
+     * @p max_solution > 0 an iterative solve stops as soon as an iterate
+     * has an entry larger than that (a singular or nearly singular H, e.g.
+     * a body held only by contact before it touches: its CG iterates grow
+     * without bound and the residual stalls) and fails with
+     * Info::singular set and no fallback to the direct solver, whose
+     * solution would be just as large.
      */
     bool
     solve(const MatrixType &H,
@@ -200,7 +208,8 @@ namespace Signorini
           const VectorType &b,
           Info             &info,
           std::string      &message,
-          double            relative_tolerance = 0.) const;
+          double            relative_tolerance = 0.,
+          double            max_solution = 0.) const;
 
     /// Whether solve() is iterative (its accuracy set by a tolerance).
     bool
