@@ -25,6 +25,17 @@ namespace Signorini
                       "* force scale, max |g_k - s_k| <= this * h and max "
                       "s_k z_k <= this * force scale * h (h: the smallest "
                       "contact mesh size; force scale as for Newton).");
+    prm.declare_entry("Acceptable tolerance",
+                      "1e-6",
+                      Patterns::Double(0.),
+                      "When the largest of the three relative residuals of "
+                      "'Tolerance' has not halved in 5 iterations, the "
+                      "iteration has stalled (the dual residual of an "
+                      "iterative linear solver's steps can stall a little "
+                      "above 'Tolerance'): the best iterate so far is kept "
+                      "as converged if its residuals are all at most this "
+                      "(like Ipopt's acceptable_tol), else the iteration "
+                      "goes on; 0: never.");
     prm.declare_entry("Maximum iterations",
                       "100",
                       Patterns::Integer(1),
@@ -120,6 +131,7 @@ namespace Signorini
   InteriorPointParameters::parse_parameters(ParameterHandler &prm)
   {
     tolerance              = prm.get_double("Tolerance");
+    acceptable_tolerance   = prm.get_double("Acceptable tolerance");
     max_iterations         = prm.get_integer("Maximum iterations");
     initial_barrier        = prm.get_double("Initial barrier");
     warm_start_barrier     = prm.get_double("Warm start barrier");
@@ -487,6 +499,19 @@ namespace Signorini
 
     std::vector<double> c(n, 0.), ds_aff(n, 0.), dz_aff(n, 0.);
     double              nu = 0.; // the merit function's penalty on |g - s|
+    // The iterate with the smallest largest relative residual, and the
+    // last iteration at which that residual halved (stall test).
+    struct
+    {
+      double              error     = std::numeric_limits<double>::infinity();
+      unsigned int        iteration = 0;
+      double              dual      = 0.;
+      double              mu_avg    = 0.;
+      VectorType          u;
+      std::vector<double> s, z;
+    } best;
+    double       progress_error     = std::numeric_limits<double>::infinity();
+    unsigned int progress_iteration = 0;
     double              mu = mu_0;
     for (unsigned int it = 0;; ++it)
       {
@@ -533,6 +558,52 @@ namespace Signorini
             warm            = true;
             return stats;
           }
+        // Stall: the largest relative residual has not halved in 5
+        // iterations. The best iterate is kept if it is acceptable.
+        {
+          const double error =
+            std::max({dual_norm / F, primal / h, complementarity / unit});
+          if (error < best.error)
+            {
+              best.error      = error;
+              best.iteration  = it;
+              best.dual       = dual_norm;
+              best.mu_avg     = mu_avg;
+              best.u          = u;
+              best.s          = s;
+              best.z          = z;
+            }
+          if (error < 0.5 * progress_error)
+            {
+              progress_error     = error;
+              progress_iteration = it;
+            }
+          else if (it >= progress_iteration + 5 &&
+                   best.error <= parameters.acceptable_tolerance)
+            {
+              progress << "      no progress in 5 iterations: the iterate of "
+                          "iteration "
+                       << best.iteration << " (largest relative residual "
+                       << std::scientific << std::setprecision(3) << best.error
+                       << ") meets the acceptable tolerance" << std::endl;
+              u = best.u;
+              s = best.s;
+              z = best.z;
+              full_evaluation();
+              stats.iterations = it;
+              stats.residual   = best.dual;
+              stats.evaluation = e;
+              stats.converged  = true;
+              std::ostringstream note;
+              note << "converged to the acceptable tolerance (stalled; largest "
+                      "relative residual "
+                   << std::scientific << std::setprecision(2) << best.error << ")";
+              stats.reason = note.str();
+              mu_last      = best.mu_avg;
+              warm         = true;
+              return stats;
+            }
+        }
         // Active-set polish: Newton steps on the active set the iterate
         // shows, kept only if they meet every tolerance (header).
         if (parameters.active_set_polish && n_constraints > 0 &&

@@ -124,7 +124,9 @@ namespace Signorini
         stats.iterations = iterations;
       }
     scene.solution_ghosted = scene.solution;
-    record.solver_status   = stats.converged ? "converged" : stats.reason;
+    // A converged solve's reason is a note (the acceptable tolerance).
+    record.solver_status =
+      stats.converged && stats.reason.empty() ? "converged" : stats.reason;
     if (!stats.converged)
       return false;
     if (this->problem.contact)

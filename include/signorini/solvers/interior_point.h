@@ -22,6 +22,9 @@ namespace Signorini
   struct InteriorPointParameters
   {
     double       tolerance              = 1e-10;
+    /// A stalled iteration keeps its best iterate if every relative
+    /// residual is at most this (0: never).
+    double       acceptable_tolerance   = 1e-6;
     unsigned int max_iterations         = 100;
     double       initial_barrier        = 1e-1;
     double       warm_start_barrier     = 1e-3;
@@ -86,7 +89,12 @@ namespace Signorini
    * - Convergence: |grad E - sum z grad g|_2 <= tol F, max |g_k - s_k| <=
    *   tol h and max s_k z_k <= tol F h, with F the energy's force scale at
    *   the start and h the smallest contact mesh size; or the last two with
-   *   a displacement step below the increment tolerance (round-off).
+   *   a displacement step below the increment tolerance (round-off); or,
+   *   when the largest of the three relative residuals has not halved in
+   *   5 iterations (a stall: the steps of an iterative linear solver can
+   *   leave the dual residual a little above tol), the best iterate so
+   *   far if all three are at most the acceptable tolerance (reported in
+   *   Statistics::reason).
    * - Warm start: the previous step's multipliers; slacks s_k = max(g_k,
    *   min(initial slack h_k, mu_0 / z_k)) and z_k >= mu_0 / s_k.
    *
