@@ -98,7 +98,7 @@ namespace Signorini
         fixed,
         eisenstat_walker
       };
-      Forcing      forcing     = Forcing::fixed;
+      Forcing      forcing     = Forcing::eisenstat_walker;
       double       max_forcing = 0.01;
 
       static void
