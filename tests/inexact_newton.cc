@@ -29,17 +29,6 @@ namespace
     return std::abs(a - b) <= 1e-14 * std::abs(b);
   }
 
-  /// All CG iterations of the run in @p folder (its load steps' sum).
-  double
-  linear_iterations(const std::string &folder)
-  {
-    double sum = 0.;
-    for (const auto &e : RunOutput::summary_numbers(folder + "/summary.json"))
-      if (e.first == "linear iterations")
-        sum += e.second;
-    return sum;
-  }
-
   const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
 } // namespace
 
@@ -112,19 +101,10 @@ main()
         fixed, scene.file, scene.edits + "    set Forcing term = fixed\n  end\nend\n");
       const int s_ew = RunOutput::run_scene(
         ew, scene.file, scene.edits + "    set Forcing term = Eisenstat-Walker\n  end\nend\n");
-      auto worst_difference = [&](const std::string &a, const std::string &b) {
-        double worst = 0.;
-        for (const auto &q : scene.quantities)
-          {
-            const double x = RunOutput::summary_quantity(a + "/summary.json", q);
-            const double y = RunOutput::summary_quantity(b + "/summary.json", q);
-            const double d = std::abs(x - y) / std::abs(x);
-            worst          = std::isnan(d) ? 1. : std::max(worst, d);
-          }
-        return worst;
-      };
-      const double worst = worst_difference(fixed, ew);
-      const double cg_fixed = linear_iterations(fixed), cg_ew = linear_iterations(ew);
+      const double worst =
+        RunOutput::largest_relative_difference(fixed, ew, scene.quantities);
+      const double cg_fixed = RunOutput::summary_sum(fixed, "linear iterations");
+      const double cg_ew    = RunOutput::summary_sum(ew, "linear iterations");
       std::cerr << scene.name << ": exit " << s_fixed << ", " << s_ew
                 << "; largest relative difference " << worst << "; CG iterations "
                 << cg_fixed << " fixed, " << cg_ew << " Eisenstat-Walker\n";
@@ -140,7 +120,8 @@ main()
             scene.file,
             scene.edits + "    set Forcing term = Eisenstat-Walker\n  end\nend\n",
             mpirun);
-          const double d = worst_difference(ew, ew2);
+          const double d =
+            RunOutput::largest_relative_difference(ew, ew2, scene.quantities);
           std::cerr << scene.name << " on 2 ranks: exit " << status
                     << "; largest relative difference " << d << "\n";
           out << scene.name << ", 2 ranks: converges, same answers to 1e-8: "

@@ -47,14 +47,8 @@ main()
   const double steps_off =
     RunOutput::first_number(RunOutput::summary_numbers("no_acceptable/summary.json"),
                             "load steps");
-  double worst = 0.;
-  for (const std::string q : {"hertz_p0", "hertz_a", "contact_force_z"})
-    {
-      const double a = RunOutput::summary_quantity("one_rank/summary.json", q);
-      const double b = RunOutput::summary_quantity("two_ranks/summary.json", q);
-      const double d = std::abs(a - b) / std::abs(b);
-      worst          = std::isnan(d) ? 1. : std::max(worst, d);
-    }
+  const double worst = RunOutput::largest_relative_difference(
+    "two_ranks", "one_rank", {"hertz_p0", "hertz_a", "contact_force_z"});
   std::cerr << "one rank: exit " << one << ", " << steps << " load steps, "
             << iterations << " iterations, noted " << noted
             << "; without the acceptable exit: exit " << off << ", " << steps_off

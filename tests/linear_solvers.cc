@@ -26,7 +26,6 @@
 #include <string>
 #include <vector>
 
-using RunOutput::summary_quantity;
 using RunOutput::verdict;
 
 namespace
@@ -102,14 +101,8 @@ main()
           const bool same_steps =
             RunOutput::first_number(numbers, "load steps") ==
             RunOutput::first_number(ref, "load steps");
-          double worst = 0.;
-          for (const auto &q : scene.quantities)
-            {
-              const double a = summary_quantity(reference + "/summary.json", q);
-              const double b = summary_quantity(name + "/summary.json", q);
-              const double d = std::abs(a - b) / std::abs(a);
-              worst          = std::isnan(d) ? 1. : std::max(worst, d);
-            }
+          const double worst =
+            RunOutput::largest_relative_difference(reference, name, scene.quantities);
           out << scene.name << ", " << v.name
               << ": converges with the reference's load steps, quantities to "
                  "1e-8: "

@@ -214,6 +214,39 @@ namespace RunOutput
     return same;
   }
 
+  /**
+   * The largest relative difference |x_a - x_b| / |x_a| of the quantities
+   * @p names between the runs in folders @p a and @p b (1 if one is
+   * missing or not finite on either side).
+   */
+  inline double
+  largest_relative_difference(const std::string              &a,
+                              const std::string              &b,
+                              const std::vector<std::string> &names)
+  {
+    double worst = 0.;
+    for (const auto &q : names)
+      {
+        const double x = summary_quantity(a + "/summary.json", q);
+        const double y = summary_quantity(b + "/summary.json", q);
+        const double d = std::abs(x - y) / std::abs(x);
+        worst          = std::isnan(d) ? 1. : std::max(worst, d);
+      }
+    return worst;
+  }
+
+  /// The sum of every number stored under @p key in the summary.json of
+  /// the run in @p folder (e.g. the load steps' "linear iterations").
+  inline double
+  summary_sum(const std::string &folder, const std::string &key)
+  {
+    double sum = 0.;
+    for (const auto &e : summary_numbers(folder + "/summary.json"))
+      if (e.first == key)
+        sum += e.second;
+    return sum;
+  }
+
 #if defined(SIGNORINI_EXECUTABLE) && defined(SIGNORINI_SOURCE_DIR)
   /**
    * Run the committed scene prm/@p scene with @p edits appended (entries

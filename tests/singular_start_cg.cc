@@ -19,19 +19,6 @@
 
 using RunOutput::verdict;
 
-namespace
-{
-  double
-  sum_of(const std::string &folder, const std::string &key)
-  {
-    double sum = 0.;
-    for (const auto &e : RunOutput::summary_numbers(folder + "/summary.json"))
-      if (e.first == key)
-        sum += e.second;
-    return sum;
-  }
-} // namespace
-
 int
 main()
 {
@@ -49,16 +36,10 @@ main()
                              "hertz_peer.prm",
                              penalty + "    set Type = cg-amg\n  end\nend\n",
                              two ? mpirun : "");
-      const double fallbacks = sum_of(name, "linear fallbacks");
-      const double cg        = sum_of(name, "linear iterations");
-      double       worst     = 0.;
-      for (const std::string q : {"contact_force_y", "hertz_a", "hertz_p0"})
-        {
-          const double a = RunOutput::summary_quantity("direct/summary.json", q);
-          const double b = RunOutput::summary_quantity(name + "/summary.json", q);
-          const double d = std::abs(a - b) / std::abs(a);
-          worst          = std::isnan(d) ? 1. : std::max(worst, d);
-        }
+      const double fallbacks = RunOutput::summary_sum(name, "linear fallbacks");
+      const double cg        = RunOutput::summary_sum(name, "linear iterations");
+      const double worst     = RunOutput::largest_relative_difference(
+        "direct", name, {"contact_force_y", "hertz_a", "hertz_p0"});
       std::cerr << name << ": exit " << status << " (direct " << direct << "), "
                 << fallbacks << " fallbacks, " << cg
                 << " CG iterations, largest relative difference " << worst << "\n";
