@@ -499,8 +499,9 @@ namespace Signorini
 
     std::vector<double> c(n, 0.), ds_aff(n, 0.), dz_aff(n, 0.);
     double              nu = 0.; // the merit function's penalty on |g - s|
-    // The iterate with the smallest largest relative residual, and the
-    // last iteration at which that residual halved (stall test).
+    // The acceptable iterate with the smallest largest relative residual,
+    // and the last iteration at which that residual halved (stall test).
+    constexpr unsigned int stall_iterations = 5;
     struct
     {
       double              error     = std::numeric_limits<double>::infinity();
@@ -558,12 +559,13 @@ namespace Signorini
             warm            = true;
             return stats;
           }
-        // Stall: the largest relative residual has not halved in 5
-        // iterations. The best iterate is kept if it is acceptable.
+        // Stall: the largest relative residual has not halved in
+        // stall_iterations iterations. The best acceptable iterate (the
+        // only kind that can be returned, so the only kind kept) is kept.
         {
           const double error =
             std::max({dual_norm / F, primal / h, complementarity / unit});
-          if (error < best.error)
+          if (error < best.error && error <= parameters.acceptable_tolerance)
             {
               best.error      = error;
               best.iteration  = it;
@@ -578,11 +580,11 @@ namespace Signorini
               progress_error     = error;
               progress_iteration = it;
             }
-          else if (it >= progress_iteration + 5 &&
+          else if (it >= progress_iteration + stall_iterations &&
                    best.error <= parameters.acceptable_tolerance)
             {
-              progress << "      no progress in 5 iterations: the iterate of "
-                          "iteration "
+              progress << "      no progress in " << stall_iterations
+                       << " iterations: the iterate of iteration "
                        << best.iteration << " (largest relative residual "
                        << std::scientific << std::setprecision(3) << best.error
                        << ") meets the acceptable tolerance" << std::endl;

@@ -202,21 +202,11 @@ namespace Signorini
   std::string
   LinearSolver::Parameters::name() const
   {
-    switch (type)
-      {
-        case Type::direct:
-          return "direct (" + direct_solver + ")";
-        case Type::cg_amg:
-          return std::string("CG + AMG (Trilinos ML)") +
-                 (forcing == Forcing::eisenstat_walker ?
-                    ", Eisenstat-Walker forcing" :
-                    "");
-        default:
-          return std::string("MINRES + AMG (Trilinos ML)") +
-                 (forcing == Forcing::eisenstat_walker ?
-                    ", Eisenstat-Walker forcing" :
-                    "");
-      }
+    if (type == Type::direct)
+      return "direct (" + direct_solver + ")";
+    return std::string(type == Type::cg_amg ? "CG" : "MINRES") +
+           " + AMG (Trilinos ML)" +
+           (forcing == Forcing::eisenstat_walker ? ", Eisenstat-Walker forcing" : "");
   }
 
   double

@@ -151,21 +151,22 @@ namespace Signorini
     LinearSolver::Info info;
     std::string        message;
     bool               indefinite = false;
+    // A direction that moves a DoF by more than 1000 scene sizes comes
+    // from a (nearly) singular Hessian, e.g. a body held only by contact
+    // before it touches (an iterative solve stops as soon as an iterate
+    // exceeds it); whether such a solve also passes the slope test is
+    // chance (it depended on the units of the scene), so it is treated
+    // like one that fails it: the Hessian gets shifted.
+    const double largest_step = 1e3 * length_scale;
     // Solve H d = -g with the current matrix: is d a descent direction?
     auto solve_for_descent = [&]() {
       if (!statistics.count_linear_solve(
-            linear_solver.solve(hessian, d, rhs, info, message, forcing,
-                                1e3 * length_scale),
+            linear_solver.solve(hessian, d, rhs, info, message, forcing, largest_step),
             info,
             message))
         return false;
       constraints.distribute(d);
-      // A direction that moves a DoF by more than 1000 scene sizes comes
-      // from a (nearly) singular Hessian, e.g. a body held only by contact
-      // before it touches; whether such a solve also passes the slope test
-      // is chance (it depended on the units of the scene), so it is
-      // treated like one that fails it: the Hessian gets shifted.
-      if (length_scale > 0. && d.linfty_norm() > 1e3 * length_scale)
+      if (length_scale > 0. && d.linfty_norm() > largest_step)
         return false;
       // A factorisation with negative pivots: H is indefinite, and d may
       // lead towards a saddle of the quadratic model even when it passes
