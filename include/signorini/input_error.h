@@ -39,4 +39,16 @@ namespace Signorini
   public:
     using std::runtime_error::runtime_error;
   };
+
+  /**
+   * A result file that could not be written (a full disk, a folder that
+   * became read-only, ...). The run stops there, keeps the files written
+   * before, writes status "failed" with this reason (which names the
+   * file) into summary.json and exits with status 3.
+   */
+  class OutputFailure : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
 } // namespace Signorini

@@ -460,6 +460,12 @@ namespace Signorini
               elapsed(run_timer) - last_checkpoint_time >= 60. * minutes))
           return;
       }
+    {
+      // The snapshot names the field frame still being written: it is on
+      // disk, and in its records, before the checkpoint is.
+      TimerOutput::Scope scope(*timer, "output");
+      postprocessor->flush();
+    }
     TimerOutput::Scope scope(*timer, "checkpoint");
     const bool         root   = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string &output = report.output_directory;
@@ -730,6 +736,12 @@ namespace Signorini
                 << snapshot_name << " there";
         pcout << std::endl;
       }
+    catch (const OutputFailure &e)
+      {
+        report.status = "failed";
+        report.reason = e.what();
+        pcout << "Run failed: " << report.reason << std::endl;
+      }
     catch (const Interruption::Interrupted &e)
       {
         // Back to the last converged state: its record, and a checkpoint
@@ -752,6 +764,19 @@ namespace Signorini
         pcout << "Run interrupted: " << report.reason << std::endl;
       }
 
+    // The last field frame, written in the background, is complete and in
+    // its records before the run reports.
+    try
+      {
+        TimerOutput::Scope scope(*timer, "output");
+        postprocessor->flush();
+      }
+    catch (const OutputFailure &e)
+      {
+        report.status = "failed";
+        report.reason = e.what();
+        pcout << "Run failed: " << report.reason << std::endl;
+      }
     {
       Utilities::System::MemoryStats memory;
       Utilities::System::get_memory_stats(memory);

@@ -6,11 +6,14 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <fstream>
 #include <iomanip>
+#include <sstream>
+#include <stdexcept>
 
 namespace Signorini
 {
@@ -95,6 +98,54 @@ namespace Signorini
     private:
       const std::map<types::material_id, const Material::Interface *> &materials;
     };
+
+    /**
+     * A DataOut whose patches, once built, can be taken away with the
+     * names and vector/tensor ranges that describe them: what
+     * DataOutBase::write_vtu needs, without the DoFHandler and the vectors
+     * the patches were built from.
+     */
+    template <int dim>
+    class DetachableDataOut : public DataOut<dim>
+    {
+    public:
+      struct Frame
+      {
+        std::vector<DataOutBase::Patch<dim, dim>> patches;
+        std::vector<std::string>                  names;
+        std::vector<
+          std::tuple<unsigned int,
+                     unsigned int,
+                     std::string,
+                     DataComponentInterpretation::DataComponentInterpretation>>
+          ranges;
+      };
+
+      Frame
+      detach()
+      {
+        Frame frame;
+        frame.names  = this->get_dataset_names();
+        frame.ranges = this->get_nonscalar_data_ranges();
+        frame.patches.swap(this->patches);
+        return frame;
+      }
+    };
+
+    /**
+     * Patches at the cells' vertices where the mapping is linear (the
+     * vertices are then the mapped points, and DataOut need not evaluate
+     * the mapping at them); through the mapping where it curves the cells.
+     */
+    template <int dim>
+    typename DataOut<dim>::CurvedCellRegion
+    curved_region(const Mapping<dim> &mapping)
+    {
+      const auto *q = dynamic_cast<const MappingQ<dim> *>(&mapping);
+      return (q != nullptr && q->get_degree() == 1) ?
+               DataOut<dim>::no_curved_cells :
+               DataOut<dim>::curved_inner_cells;
+    }
   } // namespace
 
   template <int dim>
@@ -378,9 +429,10 @@ namespace Signorini
   {
     if (parameters.format == "none" || (step % parameters.interval != 0 && !last_step))
       return;
+    flush();
     const MPI_Comm          comm = dof_handler.get_communicator();
     const StressOutput<dim> stress(materials);
-    DataOut<dim>            data_out;
+    DetachableDataOut<dim>  data_out;
     add_displacement_fields(u, stress, data_out);
 
     const auto &tria = dof_handler.get_triangulation();
@@ -396,22 +448,50 @@ namespace Signorini
     if (extra_fields)
       extra_fields(data_out);
     const unsigned int degree = dof_handler.get_fe().degree;
-    data_out.build_patches(mapping, degree, DataOut<dim>::curved_inner_cells);
+    data_out.build_patches(mapping, degree, curved_region(mapping));
 
     if (parameters.format == "vtu")
       {
+        // The same names as DataOutInterface::write_vtu_with_pvtu_record:
+        // series_SSSS.R.vtu per rank, series_SSSS.pvtu.
+        const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int n_digits = Utilities::needed_digits(n_ranks - 1);
+        const std::string  stem = series + "_" + Utilities::int_to_string(step, 4);
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(stem + "." + Utilities::int_to_string(r, n_digits) +
+                           ".vtu");
+
         DataOutBase::VtkFlags flags;
         flags.compression_level = parameters.compression;
-        data_out.set_flags(flags);
-        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-          output_directory + "/", series, step, comm, 4);
-        pvd_records[series].emplace_back(time, pvtu);
+        auto frame = std::make_shared<typename DetachableDataOut<dim>::Frame>(
+          data_out.detach());
+
+        pending            = std::make_unique<PendingFrame>();
+        pending->series    = series;
+        pending->pvtu_name = stem + ".pvtu";
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
-            AtomicFile pvd(output_directory + "/" + series + ".pvd");
-            DataOutBase::write_pvd_record(pvd.stream(), pvd_records[series]);
-            pvd.commit();
+            std::ostringstream pvtu;
+            DataOutBase::write_pvtu_record(pvtu, pieces, frame->names,
+                                           frame->ranges, flags);
+            pending->pvtu_text = pvtu.str();
           }
+        pvd_records[series].emplace_back(time, pending->pvtu_name);
+
+        // Compressing and writing this rank's piece takes longer than
+        // building its patches (zlib, 1.2 MB per frame of the default
+        // scene); a thread does it while the next load step is solved.
+        const std::string path =
+          output_directory + "/" + pieces[Utilities::MPI::this_mpi_process(comm)];
+        pending->written = std::async(std::launch::async, [frame, flags, path]() {
+          AtomicFile file(path);
+          DataOutBase::write_vtu(frame->patches, frame->names, frame->ranges,
+                                 flags, file.stream());
+          std::string reason;
+          if (!file.commit(&reason)) // the reason names the file
+            throw std::runtime_error(reason);
+        });
       }
     else
       {
@@ -430,16 +510,73 @@ namespace Signorini
   }
 
   template <int dim>
+  void
+  Postprocessor<dim>::flush()
+  {
+    if (!pending)
+      return;
+    const std::unique_ptr<PendingFrame> frame = std::move(pending);
+    const MPI_Comm                      comm  = dof_handler.get_communicator();
+    std::string                         error;
+    try
+      {
+        frame->written.get();
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    // Every rank learns of a failed file, and throws with it.
+    const unsigned int failed_rank = Utilities::MPI::min(
+      error.empty() ? numbers::invalid_unsigned_int :
+                      Utilities::MPI::this_mpi_process(comm),
+      comm);
+    if (failed_rank != numbers::invalid_unsigned_int)
+      {
+        error = Utilities::MPI::broadcast(comm, error, failed_rank);
+        throw OutputFailure("field output: " + error);
+      }
+    // The records, once every piece is complete (rank 0; its failure is
+    // every rank's).
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::string reason;
+        AtomicFile  pvtu(output_directory + "/" + frame->pvtu_name);
+        pvtu.stream() << frame->pvtu_text;
+        if (!pvtu.commit(&reason))
+          error = "cannot write " + frame->pvtu_name + ": " + reason;
+        else
+          {
+            AtomicFile pvd(output_directory + "/" + frame->series + ".pvd");
+            DataOutBase::write_pvd_record(pvd.stream(), pvd_records[frame->series]);
+            if (!pvd.commit(&reason))
+              error = "cannot write " + frame->series + ".pvd: " + reason;
+          }
+      }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw OutputFailure("field output: " + error);
+  }
+
+  template <int dim>
+  Postprocessor<dim>::~Postprocessor()
+  {
+    if (pending && pending->written.valid())
+      pending->written.wait();
+  }
+
+  template <int dim>
   std::string
   Postprocessor<dim>::write_snapshot(const VectorType &u, const std::string &name)
   {
     if (parameters.format == "none")
       return "";
+    flush();
     const StressOutput<dim> stress(materials);
     DataOut<dim>            data_out;
     add_displacement_fields(u, stress, data_out);
     data_out.build_patches(mapping, dof_handler.get_fe().degree,
-                           DataOut<dim>::curved_inner_cells);
+                           curved_region(mapping));
     DataOutBase::VtkFlags flags;
     flags.compression_level = parameters.compression;
     data_out.set_flags(flags);

@@ -16,6 +16,8 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <functional>
+#include <future>
+#include <memory>
 #include <map>
 #include <set>
 #include <string>
@@ -136,6 +138,21 @@ namespace Signorini
     write_snapshot(const VectorType &u, const std::string &name);
 
     /// Called before the patches are built, to add further fields.
+    /**
+     * Finish the VTU frame that is being written in the background: wait
+     * for this rank's file, check on every rank that all were written
+     * (collective), then add the frame to its .pvtu and .pvd records (rank
+     * 0). A frame is only named in a record once all its files are
+     * complete. write_output and write_snapshot call it first; the driver
+     * calls it before a checkpoint and at the end of a run. Throws, on
+     * every rank, if a file could not be written.
+     */
+    void
+    flush();
+
+    /// Waits for a frame still being written (without recording it).
+    ~Postprocessor();
+
     std::function<void(DataOut<dim> &)> extra_fields;
 
     /// Save and load the series written so far (their .pvd / .xdmf
@@ -170,5 +187,21 @@ namespace Signorini
     std::map<std::string, std::vector<std::pair<double, std::string>>> pvd_records;
     std::map<std::string, std::vector<XDMFEntry>>                      xdmf_entries;
     bool                                        reactions_header_written = false;
+
+    /**
+     * The VTU frame being written by a background thread while the next
+     * load step is solved (its patches are built before write_output
+     * returns, so the solution may change): this rank's file, and on rank
+     * 0 the .pvtu text and the series to commit once every rank's file is
+     * complete.
+     */
+    struct PendingFrame
+    {
+      std::future<void> written;
+      std::string       series;
+      std::string       pvtu_name;
+      std::string       pvtu_text;
+    };
+    std::unique_ptr<PendingFrame> pending;
   };
 } // namespace Signorini

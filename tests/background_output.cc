@@ -1,0 +1,124 @@
+// Field output written by a background thread while the next load step is
+// solved (output/postprocess.h, Postprocessor::flush): on 1 and 2 ranks,
+// every frame solution.pvd names has its .pvtu and every piece that names,
+// each a complete VTU file, with no temporary file left; and a piece that
+// cannot be written (a folder stands in its place) ends the run with exit
+// status 3 and summary.json's status "failed" with a reason naming the
+// file, on every rank (a failure on rank 1 alone must not hang rank 0),
+// while solution.pvd names only the frames written before it.
+
+#include "run_output.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <string>
+#include <vector>
+
+using RunOutput::verdict;
+
+namespace
+{
+  const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
+
+  int
+  run(const std::string &folder, const std::string &launcher)
+  {
+    std::ofstream(folder + ".prm")
+      << "include " << SIGNORINI_SOURCE_DIR << "/prm/default.prm\n"
+      << "set Output directory = " << folder << "\n"
+      << "subsection Output\n  set Verbosity = quiet\nend\n";
+    const int status = std::system(
+      (launcher + SIGNORINI_EXECUTABLE + " " + folder + ".prm > /dev/null 2>&1")
+        .c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  /// The file="..." names of a .pvd or the Source="..." names of a .pvtu.
+  std::vector<std::string>
+  names_in(const std::string &file, const std::string &attribute)
+  {
+    const std::string        text = RunOutput::read_text(file);
+    const std::regex         pattern(attribute + "=\"([^\"]+)\"");
+    std::vector<std::string> names;
+    for (std::sregex_iterator it(text.begin(), text.end(), pattern), end;
+         it != end;
+         ++it)
+      names.push_back((*it)[1]);
+    return names;
+  }
+
+  /// Frames named in the folder's solution.pvd whose pieces are all there
+  /// and complete; -1 if one is missing or cut short.
+  int
+  complete_frames(const std::string &folder)
+  {
+    int frames = 0;
+    for (const auto &pvtu : names_in(folder + "/solution.pvd", "file"))
+      {
+        const auto pieces = names_in(folder + "/" + pvtu, "Source");
+        if (pieces.empty())
+          return -1;
+        for (const auto &piece : pieces)
+          {
+            const std::string text = RunOutput::read_text(folder + "/" + piece);
+            if (text.size() < 20 ||
+                text.find("</VTKFile>") == std::string::npos)
+              return -1;
+          }
+        ++frames;
+      }
+    return frames;
+  }
+
+  bool
+  temporaries_left(const std::string &folder)
+  {
+    for (const auto &entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().filename().string().find(".tmp.") != std::string::npos)
+        return true;
+    return false;
+  }
+
+  std::string
+  status_and_reason(const std::string &folder)
+  {
+    const std::string text = RunOutput::read_text(folder + "/summary.json");
+    std::smatch       status, reason;
+    std::regex_search(text, status, std::regex("\"status\": \"([a-z]+)\""));
+    std::regex_search(text, reason, std::regex("\"reason\": \"([^\"]*)\""));
+    return (status.empty() ? std::string("?") : status[1].str()) + " / " +
+           (reason.empty() ? std::string("") : reason[1].str());
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  for (const bool two : {false, true})
+    {
+      const std::string ranks = two ? "2 ranks" : "1 rank";
+      const std::string good  = two ? "good_2" : "good_1";
+      std::filesystem::remove_all(good);
+      const int code = run(good, two ? mpirun : "");
+      out << ranks << ": exit status " << code << ", complete frames "
+          << complete_frames(good) << ", no temporary file left "
+          << verdict(!temporaries_left(good)) << "\n";
+
+      // Rank 0's piece on 1 rank, rank 1's on 2 ranks, of the first load
+      // step's frame.
+      const std::string bad   = two ? "bad_2" : "bad_1";
+      const std::string piece = two ? "solution_0001.1.vtu" : "solution_0001.0.vtu";
+      std::filesystem::remove_all(bad);
+      std::filesystem::create_directories(bad + "/" + piece);
+      const int  failed_code = run(bad, two ? mpirun : "");
+      const auto summary     = status_and_reason(bad);
+      out << ranks << ", " << piece << " unwritable: exit status "
+          << failed_code << ", status "
+          << summary.substr(0, summary.find(" / ")) << ", reason names the file "
+          << verdict(summary.find(piece) != std::string::npos)
+          << ", frames in solution.pvd " << complete_frames(bad) << "\n";
+    }
+}
