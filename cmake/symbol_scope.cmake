@@ -15,17 +15,22 @@
 # mostly its own: RELASZ / 24 - RELACOUNT of `readelf -d`), measured here at
 # configure time on deal.II's dependency closure (`ldd`). The same libraries
 # are loaded; only a symbol that several of them define can bind to another
-# copy, and every reference to it moves together. Compared with LD_DEBUG's
-# bindings (2026-11-25) those were C++ template and inline functions (one
-# definition by the language's rules), Open MPI's Fortran constants
-# (mpi_fortran_in_place_, ...: a copy in PETSc), BLAS and LAPACK routines (all
-# three libraries are the one OpenBLAS build), SUNDIALS' shared routines and
-# six complex BLAS routines of ScaLAPACK that nothing here calls; and
-# libcrypto's SCT_free, which the old order bound to SuperLU_dist's function
-# of that name, now binds to its own. The sequential MUMPS that Ipopt links
-# is not in deal.II's closure and so stays behind the parallel one (see
-# CMakeLists.txt). tests/symbol_scope checks the order; doc/performance.md
-# has the timings.
+# copy, and every reference to it moves together. Compared with the plain
+# link under LD_BIND_NOW=1 LD_DEBUG=bindings (every reference bound at
+# start, 2026-11-25), the non-C++ symbols that changed library were: LAPACK
+# and BLAS routines (liblapack.so.3 and libblas.so.3 to libopenblas.so.0:
+# Debian builds all three from one OpenBLAS, and dpotrf_, dgetrf_, dsytrf_
+# and dsyevx_ disassemble to the same instructions in both), Open MPI's
+# Fortran constants (mpi_fortran_in_place_, ...: a copy in PETSc; all
+# references move together), SUNDIALS' shared routines, eight complex BLAS
+# routines of ScaLAPACK and SCOTCH's error printers, which nothing here
+# calls; and libcrypto's SCT_free, which the plain order bound to
+# SuperLU_dist's function of that name, now binds to its own. C++ template
+# and inline functions (defined weakly in many libraries, one definition by
+# the language's rules) may bind to another copy. The sequential MUMPS that
+# Ipopt links is not in deal.II's closure and so stays behind the parallel
+# one (see CMakeLists.txt). tests/symbol_scope checks the order;
+# doc/performance.md has the timings.
 #
 # Without ldd or readelf (another platform), or if the closure cannot be
 # read, the link stays as it is.

@@ -8,6 +8,7 @@
 
 #include <signorini/driver/mpi_environment.h>
 
+#include <dlfcn.h>
 #include <link.h>
 
 #include <iostream>
@@ -59,6 +60,18 @@ main()
     }
   const int parallel   = position(names, "libdmumps-");
   const int sequential = position(names, "libdmumps_seq");
+  // The symbol both MUMPS builds define, as every caller in this process
+  // binds it.
+  Dl_info     info{};
+  void *const entry = dlsym(RTLD_DEFAULT, "dmumps_c");
+  const std::string defined_in =
+    (entry != nullptr && dladdr(entry, &info) != 0 && info.dli_fname != nullptr) ?
+      info.dli_fname :
+      "";
+  std::cout << "dmumps_c from the parallel MUMPS: "
+            << (defined_in.find("libdmumps-") != std::string::npos ? "yes" :
+                                                                     "no (" + defined_in + ")")
+            << '\n';
   std::cout << "parallel MUMPS before the sequential one: "
             << (parallel >= 0 && (sequential < 0 || parallel < sequential) ?
                   "yes" :
