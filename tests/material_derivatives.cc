@@ -408,6 +408,28 @@ main()
           << "\n";
     }
 
+  // The stress alone (first_piola, the output's Cauchy stress) is the P of
+  // the full evaluation, to the last bit, and is refused where it is.
+  for (const auto &c : cases)
+    {
+      bool same = true;
+      for (const Tensor<2, 3> &F : oracle_samples<3>())
+        {
+          Material::Response<3> full;
+          Tensor<2, 3>          P;
+          const bool            ok_full = c.material->evaluate(F, full, true);
+          const bool            ok_P    = c.material->first_piola(F, P);
+          same = same && ok_full == ok_P && (!ok_full || P == full.P);
+        }
+      Tensor<2, 3> inverted = unit_symmetric_tensor<3>(), P;
+      inverted[0][0]        = -1.;
+      const bool refused    = !c.material->first_piola(inverted, P) ||
+                           c.material->name().find("linear") != std::string::npos;
+      out << c.label << ": stress alone equals the P of the full evaluation: "
+          << (same ? "ok" : "FAIL") << ", J < 0 refused: " << (refused ? "ok" : "FAIL")
+          << "\n";
+    }
+
   // The checker must catch a tangent that is off by 1e-3 in one entry, for
   // every law.
   bool all_detected = true;

@@ -24,6 +24,16 @@ namespace Signorini
     }
 
     bool
+    Interface::first_piola(const Tensor<2, 3> &F, Tensor<2, 3> &P) const
+    {
+      Response<3> r;
+      if (!evaluate(F, r, true))
+        return false;
+      P = r.P;
+      return true;
+    }
+
+    bool
     Interface::evaluate_plane_strain(const Tensor<2, 2> &F,
                                      Response<2>        &response,
                                      const bool          want_derivatives) const
@@ -61,8 +71,8 @@ namespace Signorini
     cauchy_stress(const Interface &material, const Tensor<2, dim> &F)
     {
       const Tensor<2, 3> F3 = embed(F);
-      Response<3>        r;
-      if (!material.evaluate(F3, r, true))
+      Tensor<2, 3>       P;
+      if (!material.first_piola(F3, P))
         {
           Tensor<2, 3> nan;
           for (unsigned int i = 0; i < 3; ++i)
@@ -70,7 +80,7 @@ namespace Signorini
               nan[i][j] = std::numeric_limits<double>::quiet_NaN();
           return nan;
         }
-      return r.P * transpose(F3) / determinant(F3);
+      return P * transpose(F3) / determinant(F3);
     }
 
     std::pair<double, double>

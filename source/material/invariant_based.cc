@@ -16,7 +16,8 @@ namespace Signorini
     bool
     InvariantBased::evaluate_blocks(const Tensor<2, dim> &Fb,
                                     Response<dim>        &response,
-                                    const bool want_derivatives) const
+                                    const bool want_derivatives,
+                                    const bool want_tangent) const
     {
       // In plane strain (dim = 2) F = diag(F2, 1): every quantity below is
       // block diagonal with a 1 in the out-of-plane corner, so only the
@@ -67,6 +68,8 @@ namespace Signorini
         for (unsigned int j = 0; j < dim; ++j)
           if (!std::isfinite(response.P[i][j]))
             return false;
+      if (!want_tangent)
+        return true;
 
       // H_b = sum_a psi_ab G_a: the psi_ab part of A is sum_b H_b (x) G_b
       // (three rank-one terms; d2psi is symmetric).
@@ -115,6 +118,16 @@ namespace Signorini
                              const bool          want_derivatives) const
     {
       return evaluate_blocks<3>(F, response, want_derivatives);
+    }
+
+    bool
+    InvariantBased::first_piola(const Tensor<2, 3> &F, Tensor<2, 3> &P) const
+    {
+      Response<3> response;
+      if (!evaluate_blocks<3>(F, response, true, false))
+        return false;
+      P = response.P;
+      return true;
     }
 
     bool

@@ -60,6 +60,14 @@ namespace Signorini
                             Response<2>        &response,
                             const bool          want_derivatives) const;
 
+      /**
+       * The first Piola-Kirchhoff stress P at the 3D deformation gradient
+       * @p F, without the tangent (output). Returns false where evaluate()
+       * would. The default calls evaluate(); a law may compute P alone.
+       */
+      virtual bool
+      first_piola(const Tensor<2, 3> &F, Tensor<2, 3> &P) const;
+
       /// A name for output, e.g. "neo-Hookean (ln J)".
       virtual std::string
       name() const = 0;

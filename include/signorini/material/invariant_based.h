@@ -46,6 +46,10 @@ namespace Signorini
                             Response<2>        &response,
                             const bool want_derivatives) const override;
 
+      /// P without the tangent A (the same values as evaluate()'s P).
+      bool
+      first_piola(const Tensor<2, 3> &F, Tensor<2, 3> &P) const override;
+
     protected:
       /**
        * Whether the invariants (I1, I2, J), J > 0, lie in the domain of
@@ -71,12 +75,13 @@ namespace Signorini
     private:
       /// evaluate() at the in-plane block @p Fb of F (in 3D, F itself;
       /// in plane strain F = diag(Fb, 1)), keeping the dim x dim blocks of
-      /// P and A.
+      /// P and A (A only if @p want_tangent).
       template <int dim>
       bool
       evaluate_blocks(const Tensor<2, dim> &Fb,
                       Response<dim>        &response,
-                      const bool            want_derivatives) const;
+                      const bool            want_derivatives,
+                      const bool            want_tangent = true) const;
     };
 
     /**
