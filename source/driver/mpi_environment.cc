@@ -13,7 +13,11 @@ namespace Signorini
     namespace
     {
       /// The parameters the decision reads.
-      const char *const names[] = {"mtl", "pml", "ess_singleton_isolated", "sharedfp"};
+      const char *const names[] = {"mtl",
+                                   "pml",
+                                   "ess_singleton_isolated",
+                                   "sharedfp",
+                                   "orte_create_session_dirs"};
 
       /// The matching-transport components that drive RDMA adapters only.
       const std::vector<std::string> rdma_transports = {"psm", "psm2", "ofi"};
@@ -157,6 +161,15 @@ namespace Signorini
         {
           result.emplace_back("ess_singleton_isolated", "1");
           exclude("sharedfp", {"sm"});
+          // Every isolated process is job family 0, so all of them used one
+          // session directory (/tmp/ompi.HOST.UID/jf.0): a process ending
+          // removed it while another was creating it, whose MPI_Init then
+          // failed ("A call to mkdir was unable to create the desired
+          // directory"; 3 of 480 concurrent starts, 5 of 200 runs of
+          // tests/prm_mutation under load). One process needs no session
+          // directory (tests/mpi_environment starts 240 at once).
+          if (value("orte_create_session_dirs").empty())
+            result.emplace_back("orte_create_session_dirs", "0");
         }
       return result;
     }

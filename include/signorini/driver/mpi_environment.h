@@ -26,6 +26,10 @@ namespace Signorini
    *   Then also `sharedfp = ^sm`: that MPI-IO component keeps its files in
    *   the daemon's session directory and printed an error for every file
    *   HDF5 output or a checkpoint opened; one process does not need it.
+   *   And `orte_create_session_dirs = 0`: every isolated process is job
+   *   family 0 and used the same session directory, which one process
+   *   removed at its end while another was creating it (a failed
+   *   MPI_Init when several runs start at once).
    *
    * The user's choices win. Open MPI reads a parameter from the
    * environment (OMPI_MCA_<name>) before its parameter files
