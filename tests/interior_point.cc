@@ -42,23 +42,14 @@ namespace
     return "subsection Solver\n  set Method = " + name + "\nend\n";
   }
 
-  /// Largest relative difference of the quantities @p names of two runs.
+  /// Largest relative difference of the quantities @p names of run @p a
+  /// against run @p b (relative to b's values).
   double
   quantity_difference(const std::string              &a,
                       const std::string              &b,
                       const std::vector<std::string> &names)
   {
-    double worst = 0.;
-    for (const auto &q : names)
-      {
-        const double x = summary_quantity(a + "/summary.json", q);
-        const double y = summary_quantity(b + "/summary.json", q);
-        const double d = std::abs(x - y) / std::max(std::abs(y), 1e-300);
-        if (!(d <= worst))
-          std::cerr << a << " vs " << b << ": " << q << " " << x << " vs " << y << "\n";
-        worst = std::isnan(d) ? 1. : std::max(worst, d);
-      }
-    return worst;
+    return RunOutput::largest_relative_difference(b, a, names);
   }
 
   /// Largest difference of the current node positions in the contact

@@ -217,7 +217,8 @@ namespace RunOutput
   /**
    * The largest relative difference |x_a - x_b| / |x_a| of the quantities
    * @p names between the runs in folders @p a and @p b (1 if one is
-   * missing or not finite on either side).
+   * missing or not finite on either side; 0 for a quantity that is exactly
+   * 0 in both, such as a force component that vanishes by symmetry).
    */
   inline double
   largest_relative_difference(const std::string              &a,
@@ -229,7 +230,7 @@ namespace RunOutput
       {
         const double x = summary_quantity(a + "/summary.json", q);
         const double y = summary_quantity(b + "/summary.json", q);
-        const double d = std::abs(x - y) / std::abs(x);
+        const double d = std::abs(x - y) / std::max(std::abs(x), 1e-300);
         worst          = std::isnan(d) ? 1. : std::max(worst, d);
       }
     return worst;
