@@ -167,7 +167,7 @@ namespace Signorini
           // failed ("A call to mkdir was unable to create the desired
           // directory"; 3 of 480 concurrent starts, 5 of 200 runs of
           // tests/prm_mutation under load). One process needs no session
-          // directory (tests/mpi_environment starts 240 at once).
+          // directory (tests/mpi_environment starts 360, 6 at a time).
           if (value("orte_create_session_dirs").empty())
             result.emplace_back("orte_create_session_dirs", "0");
         }
