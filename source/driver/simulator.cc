@@ -345,6 +345,12 @@ namespace Signorini
         Timer cycle_timer;
         if (!mesh_ready)
           {
+            {
+              // The frame being written reads the mesh, the DoFs and the
+              // mapping that the refinement replaces.
+              TimerOutput::Scope output_scope(*timer, "output");
+              postprocessor->flush();
+            }
             TimerOutput::Scope scope(*timer, "refinement");
             scene->solution_ghosted = scene->solution;
             refined_cells = Refinement::estimate_and_mark(scene->triangulation,

@@ -121,6 +121,22 @@ namespace Signorini
           ranges;
       };
 
+      std::vector<std::string>
+      names() const
+      {
+        return this->get_dataset_names();
+      }
+
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      ranges() const
+      {
+        return this->get_nonscalar_data_ranges();
+      }
+
       Frame
       detach()
       {
@@ -430,25 +446,46 @@ namespace Signorini
     if (parameters.format == "none" || (step % parameters.interval != 0 && !last_step))
       return;
     flush();
-    const MPI_Comm          comm = dof_handler.get_communicator();
-    const StressOutput<dim> stress(materials);
-    DetachableDataOut<dim>  data_out;
-    add_displacement_fields(u, stress, data_out);
+    const MPI_Comm comm = dof_handler.get_communicator();
+
+    // What the patches are built from. For VTU a thread builds them,
+    // compresses and writes them while the next load step is solved, so
+    // the state is a copy: the solver changes u meanwhile. The contact
+    // fields live in the contact model until the next frame's
+    // extra_fields call, which comes after flush(); the mesh, the DoFs
+    // and the mapping change only after a flush() (refinement).
+    struct Sources
+    {
+      explicit Sources(
+        const VectorType                                                &u,
+        const std::map<types::material_id, const Material::Interface *> &materials)
+        : u(u)
+        , stress(materials)
+      {}
+      VectorType              u;
+      StressOutput<dim>       stress;
+      Vector<float>           material_id, rank;
+      DetachableDataOut<dim>  data_out;
+    };
+    auto sources = std::make_shared<Sources>(u, materials);
+    DetachableDataOut<dim> &data_out = sources->data_out;
+    add_displacement_fields(sources->u, sources->stress, data_out);
 
     const auto &tria = dof_handler.get_triangulation();
-    Vector<float> material_id(tria.n_active_cells()), rank(tria.n_active_cells());
+    sources->material_id.reinit(tria.n_active_cells());
+    sources->rank.reinit(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          material_id[cell->active_cell_index()] = cell->material_id();
-          rank[cell->active_cell_index()]        = cell->subdomain_id();
+          sources->material_id[cell->active_cell_index()] = cell->material_id();
+          sources->rank[cell->active_cell_index()]        = cell->subdomain_id();
         }
-    data_out.add_data_vector(material_id, "material_id");
-    data_out.add_data_vector(rank, "mpi_rank");
+    data_out.add_data_vector(sources->material_id, "material_id");
+    data_out.add_data_vector(sources->rank, "mpi_rank");
     if (extra_fields)
-      extra_fields(data_out);
+      extra_fields(data_out); // collective (ghosted contact fields)
     const unsigned int degree = dof_handler.get_fe().degree;
-    data_out.build_patches(mapping, degree, curved_region(mapping));
+    const auto         region = curved_region(mapping);
 
     if (parameters.format == "vtu")
       {
@@ -464,29 +501,35 @@ namespace Signorini
 
         DataOutBase::VtkFlags flags;
         flags.compression_level = parameters.compression;
-        auto frame = std::make_shared<typename DetachableDataOut<dim>::Frame>(
-          data_out.detach());
-
         pending            = std::make_unique<PendingFrame>();
         pending->series    = series;
         pending->pvtu_name = stem + ".pvtu";
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
+            // The names and ranges come from the attached data, not from
+            // the patches.
             std::ostringstream pvtu;
-            DataOutBase::write_pvtu_record(pvtu, pieces, frame->names,
-                                           frame->ranges, flags);
+            DataOutBase::write_pvtu_record(pvtu, pieces, data_out.names(),
+                                           data_out.ranges(), flags);
             pending->pvtu_text = pvtu.str();
           }
         pvd_records[series].emplace_back(time, pending->pvtu_name);
 
-        // Compressing and writing this rank's piece takes longer than
-        // building its patches (zlib, 1.2 MB per frame of the default
-        // scene); a thread does it while the next load step is solved.
+        // Building the patches (the stress at every vertex), compressing
+        // them (zlib) and writing this rank's piece, on a thread. It
+        // touches no MPI and only reads the mesh; the sources are released
+        // by flush() on this thread.
         const std::string path =
           output_directory + "/" + pieces[Utilities::MPI::this_mpi_process(comm)];
-        pending->written = std::async(std::launch::async, [frame, flags, path]() {
+        Sources *const job = sources.get();
+        pending->sources   = sources;
+        const Mapping<dim> &map = mapping;
+        pending->written = std::async(std::launch::async,
+                                      [job, &map, degree, region, flags, path]() {
+          job->data_out.build_patches(map, degree, region);
+          const auto frame = job->data_out.detach();
           AtomicFile file(path);
-          DataOutBase::write_vtu(frame->patches, frame->names, frame->ranges,
+          DataOutBase::write_vtu(frame.patches, frame.names, frame.ranges,
                                  flags, file.stream());
           std::string reason;
           if (!file.commit(&reason)) // the reason names the file
@@ -495,6 +538,7 @@ namespace Signorini
       }
     else
       {
+        data_out.build_patches(mapping, degree, region);
         DataOutBase::DataOutFilter filter(
           DataOutBase::DataOutFilterFlags(false, true));
         data_out.write_filtered_data(filter);

@@ -189,18 +189,20 @@ namespace Signorini
     bool                                        reactions_header_written = false;
 
     /**
-     * The VTU frame being written by a background thread while the next
-     * load step is solved (its patches are built before write_output
-     * returns, so the solution may change): this rank's file, and on rank
-     * 0 the .pvtu text and the series to commit once every rank's file is
-     * complete.
+     * The VTU frame being built and written by a background thread while
+     * the next load step is solved: this rank's file, what its patches are
+     * built from (a copy of the solution, the DataOut and its
+     * postprocessor; released by flush() on the calling thread), and on
+     * rank 0 the .pvtu text and the series to commit once every rank's
+     * file is complete.
      */
     struct PendingFrame
     {
-      std::future<void> written;
-      std::string       series;
-      std::string       pvtu_name;
-      std::string       pvtu_text;
+      std::future<void>     written;
+      std::shared_ptr<void> sources;
+      std::string           series;
+      std::string           pvtu_name;
+      std::string           pvtu_text;
     };
     std::unique_ptr<PendingFrame> pending;
   };
