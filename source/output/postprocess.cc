@@ -448,40 +448,35 @@ namespace Signorini
     flush();
     const MPI_Comm comm = dof_handler.get_communicator();
 
-    // What the patches are built from. For VTU a thread builds them,
-    // compresses and writes them while the next load step is solved, so
-    // the state is a copy: the solver changes u meanwhile. The contact
-    // fields live in the contact model until the next frame's
-    // extra_fields call, which comes after flush(); the mesh, the DoFs
-    // and the mapping change only after a flush() (refinement).
+    // What the patches are built from. DataOut copies every vector it is
+    // given into its own ghosted vector when it is attached (deal.II 9.4's
+    // DataEntry; collective), so the solver may change u, and the contact
+    // model its fields, once this function returns. The postprocessor it
+    // points to lives as long as the DataOut; the mesh, the DoFs and the
+    // mapping change only after a flush() (refinement).
     struct Sources
     {
       explicit Sources(
-        const VectorType                                                &u,
         const std::map<types::material_id, const Material::Interface *> &materials)
-        : u(u)
-        , stress(materials)
+        : stress(materials)
       {}
-      VectorType              u;
-      StressOutput<dim>       stress;
-      Vector<float>           material_id, rank;
-      DetachableDataOut<dim>  data_out;
+      StressOutput<dim>      stress;
+      DetachableDataOut<dim> data_out;
     };
-    auto sources = std::make_shared<Sources>(u, materials);
+    auto sources = std::make_shared<Sources>(materials);
     DetachableDataOut<dim> &data_out = sources->data_out;
-    add_displacement_fields(sources->u, sources->stress, data_out);
+    add_displacement_fields(u, sources->stress, data_out);
 
     const auto &tria = dof_handler.get_triangulation();
-    sources->material_id.reinit(tria.n_active_cells());
-    sources->rank.reinit(tria.n_active_cells());
+    Vector<float> material_id(tria.n_active_cells()), rank(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          sources->material_id[cell->active_cell_index()] = cell->material_id();
-          sources->rank[cell->active_cell_index()]        = cell->subdomain_id();
+          material_id[cell->active_cell_index()] = cell->material_id();
+          rank[cell->active_cell_index()]        = cell->subdomain_id();
         }
-    data_out.add_data_vector(sources->material_id, "material_id");
-    data_out.add_data_vector(sources->rank, "mpi_rank");
+    data_out.add_data_vector(material_id, "material_id");
+    data_out.add_data_vector(rank, "mpi_rank");
     if (extra_fields)
       extra_fields(data_out); // collective (ghosted contact fields)
     const unsigned int degree = dof_handler.get_fe().degree;
@@ -516,9 +511,9 @@ namespace Signorini
         pvd_records[series].emplace_back(time, pending->pvtu_name);
 
         // Building the patches (the stress at every vertex), compressing
-        // them (zlib) and writing this rank's piece, on a thread. It
-        // touches no MPI and only reads the mesh; the sources are released
-        // by flush() on this thread.
+        // them (zlib) and writing this rank's piece, on a thread, from
+        // DataOut's copies: no MPI there, and the mesh is only read. The
+        // sources are released by flush() on this thread.
         const std::string path =
           output_directory + "/" + pieces[Utilities::MPI::this_mpi_process(comm)];
         Sources *const job = sources.get();

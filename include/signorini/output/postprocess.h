@@ -191,8 +191,8 @@ namespace Signorini
     /**
      * The VTU frame being built and written by a background thread while
      * the next load step is solved: this rank's file, what its patches are
-     * built from (a copy of the solution, the DataOut and its
-     * postprocessor; released by flush() on the calling thread), and on
+     * built from (the DataOut, which holds its own copies of the vectors,
+     * and its postprocessor; released by flush() on the calling thread), and on
      * rank 0 the .pvtu text and the series to commit once every rank's
      * file is complete.
      */
