@@ -5,7 +5,10 @@
 // cannot be written (a folder stands in its place) ends the run with exit
 // status 3 and summary.json's status "failed" with a reason naming the
 // file, on every rank (a failure on rank 1 alone must not hang rank 0),
-// while solution.pvd names only the frames written before it. On 1 rank,
+// while solution.pvd names only the frames written before it. Every frame's
+// pieces hold the mesh's cells together; a rank with 2 threads writes 2
+// pieces (the default scene has 6630 cells, at least 2000 for each), 2
+// ranks with 1 thread each one piece each. On 1 rank,
 // the frame of the first load step (built and written while the second is
 // solved) is byte for byte the last frame of a run that stops after that
 // step (written once the run is over). That run ends with exit status 4:
@@ -57,27 +60,50 @@ namespace
     return names;
   }
 
-  /// Frames named in the folder's solution.pvd whose pieces are all there
-  /// and complete; -1 if one is missing or cut short.
-  int
-  complete_frames(const std::string &folder)
+  struct Frames
   {
-    int frames = 0;
+    int  complete    = 0;    // -1 if a piece is missing or cut short
+    bool all_cells   = true; // each frame's pieces hold the mesh's cells
+    int  last_pieces = 0;
+    int  threads     = 0;    // per rank, from summary.json
+  };
+
+  /// The frames named in the folder's solution.pvd whose pieces are all
+  /// there and complete, and the cells in them.
+  Frames
+  frames_in(const std::string &folder)
+  {
+    Frames      frames;
+    const auto  numbers = RunOutput::summary_numbers(folder + "/summary.json");
+    const auto  cells   = RunOutput::first_number(numbers, "cells");
+    frames.threads = RunOutput::first_number(numbers, "threads per rank");
     for (const auto &pvtu : names_in(folder + "/solution.pvd", "file"))
       {
         const auto pieces = names_in(folder + "/" + pvtu, "Source");
         if (pieces.empty())
-          return -1;
+          return Frames{-1, false, 0};
+        double in_pieces = 0.;
         for (const auto &piece : pieces)
           {
             const std::string text = RunOutput::read_text(folder + "/" + piece);
             if (text.size() < 20 ||
                 text.find("</VTKFile>") == std::string::npos)
-              return -1;
+              return Frames{-1, false, 0};
+            std::smatch n;
+            if (std::regex_search(text, n, std::regex("NumberOfCells=\"([0-9]+)\"")))
+              in_pieces += std::stod(n[1]);
           }
-        ++frames;
+        frames.all_cells = frames.all_cells && in_pieces == cells;
+        frames.last_pieces = pieces.size();
+        ++frames.complete;
       }
     return frames;
+  }
+
+  int
+  complete_frames(const std::string &folder)
+  {
+    return frames_in(folder).complete;
   }
 
   /// A VTU file without its comment (it carries the date and time).
@@ -122,16 +148,25 @@ main()
       const std::string ranks = two ? "2 ranks" : "1 rank";
       const std::string good  = two ? "good_2" : "good_1";
       std::filesystem::remove_all(good);
-      const int code = run(good, two ? mpirun : "");
+      // 2 threads for the one rank, 1 for each of 2.
+      const int code =
+        run(good, two ? mpirun + "-x DEAL_II_NUM_THREADS=1 " :
+                        "DEAL_II_NUM_THREADS=2 ");
+      const Frames frames = frames_in(good);
       out << ranks << ": exit status " << code << ", complete frames "
-          << complete_frames(good) << ", no temporary file left "
-          << verdict(!temporaries_left(good)) << "\n";
+          << frames.complete << ", pieces per frame = "
+          << (two ? "ranks" : "threads") << " "
+          << verdict(frames.last_pieces == (two ? 2 : frames.threads) &&
+                     frames.threads == (two ? 1 : 2))
+          << ", the pieces hold every cell " << verdict(frames.all_cells)
+          << ", no temporary file left " << verdict(!temporaries_left(good))
+          << "\n";
       if (!two)
         {
           // The same first load step (t = 0.5, dt = 0.5), as the last one.
           std::filesystem::remove_all("half");
           const int half_code =
-            run("half", "",
+            run("half", "DEAL_II_NUM_THREADS=2 ",
                 "subsection Load stepping\n  set End time = 0.5\n"
                 "  set Number of steps = 1\nend\n");
           const std::string a = without_comment(good + "/solution_0001.0.vtu");
@@ -141,18 +176,27 @@ main()
               << verdict(a.size() > 1000 && a == b) << "\n";
         }
 
-      // Rank 0's piece on 1 rank, rank 1's on 2 ranks, of the first load
-      // step's frame.
-      const std::string bad   = two ? "bad_2" : "bad_1";
-      const std::string piece = two ? "solution_0001.1.vtu" : "solution_0001.0.vtu";
-      std::filesystem::remove_all(bad);
-      std::filesystem::create_directories(bad + "/" + piece);
-      const int  failed_code = run(bad, two ? mpirun : "");
-      const auto summary     = status_and_reason(bad);
-      out << ranks << ", " << piece << " unwritable: exit status "
-          << failed_code << ", status "
-          << summary.substr(0, summary.find(" / ")) << ", reason names the file "
-          << verdict(summary.find(piece) != std::string::npos)
-          << ", frames in solution.pvd " << complete_frames(bad) << "\n";
+      // Of the first load step's frame: on 1 rank (2 threads) each of its
+      // two pieces (the second is written by a thread of its own), on 2
+      // ranks rank 1's.
+      const std::vector<std::string> unwritable =
+        two ? std::vector<std::string>{"solution_0001.1.vtu"} :
+              std::vector<std::string>{"solution_0001.0.vtu", "solution_0001.1.vtu"};
+      for (const auto &piece : unwritable)
+        {
+          const std::string bad = std::string(two ? "bad_2_" : "bad_1_") + piece;
+          std::filesystem::remove_all(bad);
+          std::filesystem::create_directories(bad + "/" + piece);
+          const int failed_code =
+            run(bad, two ? mpirun + "-x DEAL_II_NUM_THREADS=1 " :
+                           "DEAL_II_NUM_THREADS=2 ");
+          const auto summary = status_and_reason(bad);
+          out << ranks << ", " << piece << " unwritable: exit status "
+              << failed_code << ", status "
+              << summary.substr(0, summary.find(" / "))
+              << ", reason names the file "
+              << verdict(summary.find(piece) != std::string::npos)
+              << ", frames in solution.pvd " << complete_frames(bad) << "\n";
+        }
     }
 }

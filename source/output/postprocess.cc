@@ -3,6 +3,7 @@
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/postprocess.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
@@ -214,8 +215,10 @@ namespace Signorini
       prm.declare_entry("Format",
                         "vtu",
                         Patterns::Selection("vtu|hdf5|none"),
-                        "vtu: one .vtu per rank and a .pvtu per step with a "
-                        "solution.pvd series for ParaView. hdf5: one .h5 per "
+                        "vtu: a .pvtu per step with a solution.pvd series for "
+                        "ParaView, and one .vtu piece per rank (per thread "
+                        "of a rank with at least 2000 cells a thread: the "
+                        "pieces are compressed side by side). hdf5: one .h5 per "
                         "step and a solution.xdmf series. none: no fields "
                         "(summary.json and CSV are always written).");
       prm.declare_entry("Compression",
@@ -469,9 +472,11 @@ namespace Signorini
 
     const auto &tria = dof_handler.get_triangulation();
     Vector<float> material_id(tria.n_active_cells()), rank(tria.n_active_cells());
+    unsigned int  n_owned_cells = 0;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          ++n_owned_cells;
           material_id[cell->active_cell_index()] = cell->material_id();
           rank[cell->active_cell_index()]        = cell->subdomain_id();
         }
@@ -484,14 +489,23 @@ namespace Signorini
 
     if (parameters.format == "vtu")
       {
-        // The same names as DataOutInterface::write_vtu_with_pvtu_record:
-        // series_SSSS.R.vtu per rank, series_SSSS.pvtu.
-        const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-        const unsigned int n_digits = Utilities::needed_digits(n_ranks - 1);
+        // Names as DataOutInterface::write_vtu_with_pvtu_record gives them,
+        // series_SSSS.P.vtu and series_SSSS.pvtu, with P counting the pieces
+        // of every rank in turn: zlib compresses on one core, so a rank with
+        // several threads (and at least 2000 cells for each) splits its
+        // patches into that many pieces, compressed and written side by
+        // side. The same count on every rank; 1 gives one piece per rank.
+        const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int per_rank  = Utilities::MPI::min(
+          std::max(1u, std::min(MultithreadInfo::n_threads(), n_owned_cells / 2000)),
+          comm);
+        const unsigned int n_pieces = n_ranks * per_rank;
+        const unsigned int n_digits = Utilities::needed_digits(n_pieces - 1);
         const std::string  stem = series + "_" + Utilities::int_to_string(step, 4);
         std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(stem + "." + Utilities::int_to_string(r, n_digits) +
+        for (unsigned int p = 0; p < n_pieces; ++p)
+          pieces.push_back(stem + "." + Utilities::int_to_string(p, n_digits) +
                            ".vtu");
 
         DataOutBase::VtkFlags flags;
@@ -511,24 +525,59 @@ namespace Signorini
         pvd_records[series].emplace_back(time, pending->pvtu_name);
 
         // Building the patches (the stress at every vertex), compressing
-        // them (zlib) and writing this rank's piece, on a thread, from
+        // them (zlib) and writing this rank's pieces, on threads, from
         // DataOut's copies: no MPI there, and the mesh is only read. The
         // sources are released by flush() on this thread.
-        const std::string path =
-          output_directory + "/" + pieces[Utilities::MPI::this_mpi_process(comm)];
+        std::vector<std::string> paths;
+        for (unsigned int k = 0; k < per_rank; ++k)
+          paths.push_back(output_directory + "/" + pieces[this_rank * per_rank + k]);
         Sources *const job = sources.get();
         pending->sources   = sources;
         const Mapping<dim> &map = mapping;
         pending->written = std::async(std::launch::async,
-                                      [job, &map, degree, region, flags, path]() {
+                                      [job, &map, degree, region, flags, paths]() {
           job->data_out.build_patches(map, degree, region);
-          const auto frame = job->data_out.detach();
-          AtomicFile file(path);
-          DataOutBase::write_vtu(frame.patches, frame.names, frame.ranges,
-                                 flags, file.stream());
-          std::string reason;
-          if (!file.commit(&reason)) // the reason names the file
-            throw std::runtime_error(reason);
+          auto frame = job->data_out.detach();
+          // Piece k: the k-th of the contiguous ranges of patches.
+          std::vector<std::vector<DataOutBase::Patch<dim, dim>>> parts(paths.size());
+          const std::size_t n = frame.patches.size();
+          for (std::size_t k = 0; k < parts.size(); ++k)
+            parts[k].assign(
+              std::make_move_iterator(frame.patches.begin() + n * k / parts.size()),
+              std::make_move_iterator(frame.patches.begin() +
+                                      n * (k + 1) / parts.size()));
+          const auto write_piece = [&parts, &frame, &flags, &paths](const unsigned int k) {
+            AtomicFile file(paths[k]);
+            DataOutBase::write_vtu(parts[k], frame.names, frame.ranges, flags,
+                                   file.stream());
+            std::string reason;
+            if (!file.commit(&reason)) // the reason names the file
+              throw std::runtime_error(reason);
+          };
+          std::vector<std::future<void>> others;
+          for (unsigned int k = 1; k < paths.size(); ++k)
+            others.push_back(std::async(std::launch::async, write_piece, k));
+          std::exception_ptr failure;
+          try
+            {
+              write_piece(0);
+            }
+          catch (...)
+            {
+              failure = std::current_exception();
+            }
+          for (auto &other : others)
+            try
+              {
+                other.get();
+              }
+            catch (...)
+              {
+                if (!failure)
+                  failure = std::current_exception();
+              }
+          if (failure)
+            std::rethrow_exception(failure);
         });
       }
     else
