@@ -615,7 +615,10 @@ namespace Signorini
             std::vector<char> pinned(n, 0);
             for (unsigned int k = 0; k < n; ++k)
               pinned[k] = active[k] && z[k] / F > s[k] / h;
-            if (pinned != last_polished)
+            // The polish is collective: every rank tries it if the active
+            // set changed on any rank (a rank without contact nodes sees
+            // none change; deciding locally hung 4-rank runs).
+            if (max(pinned != last_polished ? 1. : 0.) > 0.)
               {
                 last_polished = pinned;
                 if (polish(pinned, it))
