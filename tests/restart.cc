@@ -9,7 +9,8 @@
 //   incompressible bodies (the augmented Lagrangian's multipliers);
 // - adaptive refinement cycles, restarted in the load path and in a cycle.
 // Writing checkpoints does not change the run. Bad restarts exit 2 with a
-// message: a changed mesh entry, another number of ranks, no checkpoint.
+// message: a changed mesh entry, another number of ranks, no checkpoint,
+// a state file of rank 1 cut short (on 2 ranks, without a hang).
 
 #include "run_output.h"
 
@@ -154,5 +155,23 @@ main()
                                          " --restart empty 2>&1");
     out << "no checkpoint: exit code " << none.first << ", says so: "
         << verdict(none.second.find("no checkpoint") != std::string::npos) << "\n";
+
+    // Rank 1's state file cut short: every rank reports it and stops (rank
+    // 1 alone failed before, and rank 0 waited for it in the first
+    // collective operation for ever).
+    const std::string damaged = "ranks_damaged";
+    std::filesystem::remove_all(damaged);
+    std::filesystem::copy("ranks", damaged, std::filesystem::copy_options::recursive);
+    const std::string state = checkpoint(damaged, 2) + "/state-1.bin";
+    const bool        cut   = std::filesystem::exists(state);
+    if (cut)
+      std::filesystem::resize_file(state, std::filesystem::file_size(state) / 2);
+    const auto reply = RunOutput::execute("timeout 300 " + mpirun +
+                                          SIGNORINI_EXECUTABLE + " --restart " +
+                                          checkpoint(damaged, 2) + " 2>&1");
+    out << "rank 1's state file cut short: exit code " << reply.first
+        << ", names it: "
+        << verdict(cut && reply.second.find("state-1.bin") != std::string::npos)
+        << "\n";
   }
 }

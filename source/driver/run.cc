@@ -1,5 +1,6 @@
 #include <signorini/driver/checkpoint.h>
 #include <signorini/driver/mpi_environment.h>
+#include <signorini/driver/rank_agreement.h>
 #include <signorini/driver/run.h>
 #include <signorini/driver/study.h>
 #include <signorini/input_error.h>
@@ -334,49 +335,62 @@ namespace Signorini
     /**
      * Run @p body for the parameter file @p file and turn its exceptions
      * into a message on rank 0 and an exit code: 2 for bad input, 1 for
-     * anything else.
+     * anything else. An error that ends the run on some ranks only would
+     * leave the others waiting in a collective operation: the failed rank
+     * then prints its error and aborts the MPI job (driver/rank_agreement.h).
      */
     int
     guarded(const std::string &file, const bool root, const std::function<int()> &body)
     {
+      int         code = internal_error;
+      std::string message;
       try
         {
           return body();
         }
       catch (const InputError &e)
         {
-          if (root)
-            std::cerr << "signorini: error: " << e.what() << std::endl;
-          return input_error;
+          code    = input_error;
+          message = std::string("signorini: error: ") + e.what();
         }
       catch (const std::bad_alloc &)
         {
-          if (root)
-            std::cerr << "signorini: error: " << file
-                      << ": out of memory: the scene needs more memory than "
-                         "this machine has (reduce Mesh > Global refinements, "
-                         "Local refinements or a body's Subdivisions)"
-                      << std::endl;
-          return input_error;
+          code    = input_error;
+          message = "signorini: error: " + file +
+                    ": out of memory: the scene needs more memory than "
+                    "this machine has (reduce Mesh > Global refinements, "
+                    "Local refinements or a body's Subdivisions)";
         }
       catch (const std::exception &e)
         {
-          const std::string message = essential_message(e.what());
+          const std::string what = essential_message(e.what());
           // A number the pattern accepts but std::stod cannot hold (e.g. a
           // subnormal 1e-320, or beyond 1.8e308) is bad input, not a bug.
-          if (message.find("Can't convert the parameter value") != std::string::npos)
+          if (what.find("Can't convert the parameter value") != std::string::npos)
             {
-              if (root)
-                std::cerr << "signorini: error: " << file << ": " << message
-                          << " (out of the range of a double: |x| must lie "
-                             "between 2.2e-308 and 1.8e308, or be 0)"
-                          << std::endl;
-              return input_error;
+              code    = input_error;
+              message = "signorini: error: " + file + ": " + what +
+                        " (out of the range of a double: |x| must lie "
+                        "between 2.2e-308 and 1.8e308, or be 0)";
             }
-          if (root)
-            std::cerr << "signorini: internal error: " << message << std::endl;
-          return internal_error;
+          else
+            {
+              code    = internal_error;
+              message = "signorini: internal error: " + what;
+            }
         }
+      if (!RankAgreement::all_ranks_failed(RankAgreement::default_wait))
+        {
+          std::cerr << message << "\nsignorini: MPI rank "
+                    << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                    << " failed alone (the other ranks did not within "
+                    << RankAgreement::default_wait
+                    << " s): aborting the run" << std::endl;
+          MPI_Abort(MPI_COMM_WORLD, code);
+        }
+      if (root)
+        std::cerr << message << std::endl;
+      return code;
     }
   } // namespace
 
@@ -390,6 +404,7 @@ namespace Signorini
     // chose otherwise (driver/mpi_environment.h); summary.json lists them.
     MpiEnvironment::prepare();
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
+    RankAgreement::initialize();
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     // deal.II prints exceptions to stderr when they are created in debug
     // mode; keep the user's screen to our own message.

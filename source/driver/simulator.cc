@@ -76,7 +76,12 @@ namespace Signorini
                         PostprocessParameters::Verbosity::quiet;
     pcout.set_condition(talk);
     progress.set_condition(talk);
-    timer = std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never,
+    // Each rank times its own phases (summary.json takes the largest over
+    // the ranks, phase_times()). A TimerOutput on `comm` would reduce over
+    // the ranks at the end of every section, so that an exception leaving
+    // a section on one rank only would send a collective the other ranks
+    // are not in.
+    timer = std::make_unique<TimerOutput>(MPI_COMM_SELF, pcout, TimerOutput::never,
                                           TimerOutput::wall_times);
     try
       {
@@ -510,27 +515,38 @@ namespace Signorini
     Report saved          = resumed_report();
     saved.timing          = run_times(run_timer);
     {
-      std::ofstream out(Checkpoint::state_file(folder,
-                                               Utilities::MPI::this_mpi_process(comm)),
-                        std::ios::binary);
-      {
-        OutputArchive archive(out);
-        archive << header;
-        archive << resume.time << resume.dt << resume.step << resume.mesh_ready
-                << resume.refined_cells << saved << resume.file_sizes
-                << resume.parts;
-        // This rank's entries of the vectors, for a mesh built as before.
-        std::vector<double> values;
-        for (const VectorType *v : {&resume.solution, &resume.pattern})
+      // A write error throws from the archive on this rank only: caught
+      // here, it is every rank's failure below.
+      bool ok = true;
+      try
+        {
+          std::ofstream out(
+            Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm)),
+            std::ios::binary);
           {
-            values.clear();
-            for (const auto i : scene->locally_owned)
-              values.push_back((*v)[i]);
-            archive << values;
+            OutputArchive archive(out);
+            archive << header;
+            archive << resume.time << resume.dt << resume.step
+                    << resume.mesh_ready << resume.refined_cells << saved
+                    << resume.file_sizes << resume.parts;
+            // This rank's entries of the vectors, for a mesh built as
+            // before.
+            std::vector<double> values;
+            for (const VectorType *v : {&resume.solution, &resume.pattern})
+              {
+                values.clear();
+                for (const auto i : scene->locally_owned)
+                  values.push_back((*v)[i]);
+                archive << values;
+              }
           }
-      }
-      out.flush();
-      const bool ok = static_cast<bool>(out);
+          out.flush();
+          ok = static_cast<bool>(out);
+        }
+      catch (const std::exception &)
+        {
+          ok = false;
+        }
       if (Utilities::MPI::min(ok ? 1 : 0, comm) == 0)
         collective_check("a state file could not be written", "write");
     }
@@ -569,31 +585,51 @@ namespace Signorini
   void
   Simulator<dim>::restore(const std::string &folder)
   {
-    const std::string file =
-      Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-      throw InputError("--restart", "cannot read '" + file + "'");
-    Checkpoint::Header header;
-    Report             saved;
-    std::string        parts;
-    InputArchive       archive(in);
-    archive >> header;
-    archive >> time >> dt >> step >> mesh_ready >> refined_cells >> saved >>
-      resume.file_sizes >> parts;
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const std::string  file = Checkpoint::state_file(folder, rank);
+    // Each rank reads its own state file. What fails there (a missing or
+    // damaged file) is every rank's error, named after the first rank
+    // that met it: the other ranks must not go on into the collectives
+    // below.
+    Checkpoint::Header  header;
+    Report              saved;
+    std::string         parts;
+    std::vector<double> values[2];
+    std::string         error;
+    try
+      {
+        std::ifstream in(file, std::ios::binary);
+        if (!in)
+          throw std::runtime_error("cannot read '" + file + "'");
+        InputArchive archive(in);
+        archive >> header;
+        archive >> time >> dt >> step >> mesh_ready >> refined_cells >> saved >>
+          resume.file_sizes >> parts;
+        if (header.mesh_as_built)
+          {
+            archive >> values[0] >> values[1];
+            if (values[0].size() != scene->locally_owned.n_elements())
+              throw std::runtime_error(
+                file + " holds " + std::to_string(values[0].size()) +
+                " DoFs of this rank, the mesh built from the parameters has " +
+                std::to_string(scene->locally_owned.n_elements()));
+          }
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+        if (error.find(file) == std::string::npos)
+          error = file + ": " + error;
+      }
+    const unsigned int failed = Utilities::MPI::min(
+      error.empty() ? numbers::invalid_unsigned_int : rank, comm);
+    if (failed != numbers::invalid_unsigned_int)
+      throw InputError("--restart", Utilities::MPI::broadcast(comm, error, failed));
 
     // The solution and the state the Hessian's structure was built at.
     if (header.mesh_as_built)
       {
         // The same mesh and DoF numbering as the run that wrote it.
-        std::vector<double> values[2];
-        archive >> values[0] >> values[1];
-        if (values[0].size() != scene->locally_owned.n_elements())
-          throw InputError("--restart",
-                           file + " holds " + std::to_string(values[0].size()) +
-                             " DoFs of this rank, the mesh built from the "
-                             "parameters has " +
-                             std::to_string(scene->locally_owned.n_elements()));
         VectorType pattern(scene->locally_owned, comm);
         std::size_t k = 0;
         for (const auto i : scene->locally_owned)

@@ -635,8 +635,13 @@ namespace Signorini
           error = "cannot write " + frame->pvtu_name + ": " + reason;
         else
           {
+            // Into a string first: deal.II throws if the stream it writes
+            // to has failed, which would leave the other ranks waiting in
+            // the broadcast below.
+            std::ostringstream text;
+            DataOutBase::write_pvd_record(text, pvd_records[frame->series]);
             AtomicFile pvd(output_directory + "/" + frame->series + ".pvd");
-            DataOutBase::write_pvd_record(pvd.stream(), pvd_records[frame->series]);
+            pvd.stream() << text.str();
             if (!pvd.commit(&reason))
               error = "cannot write " + frame->series + ".pvd: " + reason;
           }
