@@ -222,6 +222,17 @@ main()
   out << "incompressible neo-Hookean on 2 ranks: converged, quantities as on 1 rank "
          "to 1e-8: "
       << verdict(incompressible_ranks && incompressible_d <= 1e-8) << "\n";
+  // summary.json counts the constraints of every rank (it wrote rank 0's).
+  const auto constraints = [](const std::string &folder) {
+    return RunOutput::first_number(
+      RunOutput::summary_numbers(folder + "/summary.json"),
+      "incompressibility constraints");
+  };
+  const double constraints_1 = constraints("incompressible_neo_hookean_interior_point"),
+               constraints_2 = constraints("incompressible_two_ranks");
+  out << "incompressible neo-Hookean: constraints in summary.json the same on 1 and "
+         "2 ranks: "
+      << verdict(constraints_1 > 0. && constraints_1 == constraints_2) << "\n";
 
   // 2 ranks against 1.
   const bool ranks =

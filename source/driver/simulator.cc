@@ -725,14 +725,18 @@ namespace Signorini
 
     periodic_checkpoints = parameters.checkpoint.enabled(
       parameters.load_stepping.n_steps, report.n_dofs);
+    // The constrained cells of every rank (cells() holds this rank's).
+    const unsigned int incompressible_cells = Utilities::MPI::sum(
+      problem->incompressibility ?
+        static_cast<unsigned int>(problem->incompressibility->cells().size()) :
+        0u,
+      comm);
     auto summary = [&]() {
       write_summary(report,
                     parameters.refinement,
                     problem->contact.get(),
                     *solver,
-                    problem->incompressibility ?
-                      problem->incompressibility->cells().size() :
-                      0u,
+                    incompressible_cells,
                     comm);
     };
     // Until the run ends, summary.json says it is running: never the

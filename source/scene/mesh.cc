@@ -62,9 +62,13 @@ namespace Signorini
             memory = kb * 1024.;
           meminfo.ignore(256, '\n');
         }
+      // The smallest node decides, the same way on every rank (each rank
+      // reads its own node).
+      memory = Utilities::MPI::min(memory, comm);
       if (!(memory > 0.))
         return;
-      const double cores = std::max(1u, std::thread::hardware_concurrency());
+      const double cores = Utilities::MPI::min(
+        double(std::max(1u, std::thread::hardware_concurrency())), comm);
       const double nodes =
         std::max(1., Utilities::MPI::n_mpi_processes(comm) / cores);
       if (bytes > memory * nodes || cells > 4e9)
