@@ -111,4 +111,19 @@ main()
                  text.find("Number of cycle") != std::string::npos)
       << "\n";
   std::cerr << text;
+
+  // The study's folder cannot be made (a file stands where the output
+  // directory should be): exit 2 with a message, on every rank (rank 0
+  // alone threw before, and on several ranks the others waited for it).
+  std::ofstream("blocked") << "a file, not a folder\n";
+  write_study("blocked_study.prm", "Mesh refinement/Number of cycles = 1");
+  std::ofstream("blocked_study.prm", std::ios::app)
+    << "set Output directory = blocked/run\n";
+  const auto blocked = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                          " --study blocked_study.prm 2>&1");
+  out << "study folder that cannot be made: exit 2: "
+      << verdict(blocked.first == 2) << ", message names it: "
+      << verdict(blocked.second.find("cannot create 'blocked/run/study'") !=
+                 std::string::npos)
+      << "\n";
 }

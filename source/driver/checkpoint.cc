@@ -175,7 +175,8 @@ namespace Signorini
            std::filesystem::directory_iterator(root(output_directory), ec))
         {
           const std::string name = entry.path().filename().string();
-          if (entry.is_directory() && name.rfind(prefix, 0) == 0 &&
+          std::error_code   type_ec; // the overload that cannot throw
+          if (entry.is_directory(type_ec) && name.rfind(prefix, 0) == 0 &&
               name.size() == prefix.size() + 6 &&
               std::all_of(name.begin() + prefix.size(), name.end(),
                           [](const char c) { return std::isdigit(c); }))

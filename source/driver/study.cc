@@ -252,8 +252,21 @@ namespace Signorini
       Parameters::Global scene;
       scene.parse_parameters(prm, file);
       const std::string directory = scene.output_directory + "/study";
-      if (root)
-        std::filesystem::create_directories(directory);
+      {
+        // Rank 0 creates it; a failure is every rank's error.
+        std::string error;
+        if (root)
+          {
+            std::error_code ec;
+            std::filesystem::create_directories(directory, ec);
+            if (ec)
+              error = ec.message();
+          }
+        error = Utilities::MPI::broadcast(comm, error, 0);
+        if (!error.empty())
+          throw InputError("Output directory",
+                           "cannot create '" + directory + "': " + error);
+      }
 
       // Check every variant's settings before the first run.
       for (const auto &variant : variants)
