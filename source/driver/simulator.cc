@@ -1,6 +1,7 @@
 #include <signorini/archive_io.h>
 #include <signorini/driver/checkpoint.h>
 #include <signorini/driver/simulator.h>
+#include <signorini/first_error.h>
 #include <signorini/input_error.h>
 #include <signorini/interruption.h>
 #include <signorini/output/atomic_file.h>
@@ -585,8 +586,8 @@ namespace Signorini
   void
   Simulator<dim>::restore(const std::string &folder)
   {
-    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-    const std::string  file = Checkpoint::state_file(folder, rank);
+    const std::string file =
+      Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
     // Each rank reads its own state file. What fails there (a missing or
     // damaged file) is every rank's error, named after the first rank
     // that met it: the other ranks must not go on into the collectives
@@ -621,10 +622,9 @@ namespace Signorini
         if (error.find(file) == std::string::npos)
           error = file + ": " + error;
       }
-    const unsigned int failed = Utilities::MPI::min(
-      error.empty() ? numbers::invalid_unsigned_int : rank, comm);
-    if (failed != numbers::invalid_unsigned_int)
-      throw InputError("--restart", Utilities::MPI::broadcast(comm, error, failed));
+    error = first_error(comm, error);
+    if (!error.empty())
+      throw InputError("--restart", error);
 
     // The solution and the state the Hessian's structure was built at.
     if (header.mesh_as_built)

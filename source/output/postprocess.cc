@@ -1,4 +1,5 @@
 #include <signorini/archive_io.h>
+#include <signorini/first_error.h>
 #include <signorini/input_error.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/postprocess.h>
@@ -110,16 +111,17 @@ namespace Signorini
     class DetachableDataOut : public DataOut<dim>
     {
     public:
+      using Ranges = std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>;
+
       struct Frame
       {
         std::vector<DataOutBase::Patch<dim, dim>> patches;
         std::vector<std::string>                  names;
-        std::vector<
-          std::tuple<unsigned int,
-                     unsigned int,
-                     std::string,
-                     DataComponentInterpretation::DataComponentInterpretation>>
-          ranges;
+        Ranges                                    ranges;
       };
 
       std::vector<std::string>
@@ -128,11 +130,7 @@ namespace Signorini
         return this->get_dataset_names();
       }
 
-      std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
+      Ranges
       ranges() const
       {
         return this->get_nonscalar_data_ranges();
@@ -142,8 +140,8 @@ namespace Signorini
       detach()
       {
         Frame frame;
-        frame.names  = this->get_dataset_names();
-        frame.ranges = this->get_nonscalar_data_ranges();
+        frame.names  = names();
+        frame.ranges = ranges();
         frame.patches.swap(this->patches);
         return frame;
       }
@@ -615,15 +613,9 @@ namespace Signorini
         error = e.what();
       }
     // Every rank learns of a failed file, and throws with it.
-    const unsigned int failed_rank = Utilities::MPI::min(
-      error.empty() ? numbers::invalid_unsigned_int :
-                      Utilities::MPI::this_mpi_process(comm),
-      comm);
-    if (failed_rank != numbers::invalid_unsigned_int)
-      {
-        error = Utilities::MPI::broadcast(comm, error, failed_rank);
-        throw OutputFailure("field output: " + error);
-      }
+    error = first_error(comm, error);
+    if (!error.empty())
+      throw OutputFailure("field output: " + error);
     // The records, once every piece is complete (rank 0; its failure is
     // every rank's).
     if (Utilities::MPI::this_mpi_process(comm) == 0)

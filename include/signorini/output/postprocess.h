@@ -137,7 +137,6 @@ namespace Signorini
     std::string
     write_snapshot(const VectorType &u, const std::string &name);
 
-    /// Called before the patches are built, to add further fields.
     /**
      * Finish the VTU frame that is being written in the background: wait
      * for this rank's file, check on every rank that all were written
@@ -153,6 +152,7 @@ namespace Signorini
     /// Waits for a frame still being written (without recording it).
     ~Postprocessor();
 
+    /// Called before the patches are built, to add further fields.
     std::function<void(DataOut<dim> &)> extra_fields;
 
     /// Save and load the series written so far (their .pvd / .xdmf
