@@ -18,7 +18,9 @@
 //   Gauss points, penetrate at most `node_penetration` h;
 // - and it prints the number of load steps and step cuts and the
 //   reactions at t = 1, 1.5 and 2 to 4 digits, which the .mpirun=2
-//   variants expect to be the same as on one rank.
+//   variants expect to be the same as on one rank; with print_iterations
+//   also the total of Newton iterations, which must not depend on the
+//   rank count either (issue: robust sliding).
 #pragma once
 
 #include "run_output.h"
@@ -42,7 +44,8 @@ namespace IroningCheck
         const std::string vertical,
         const double      mean_ratio,
         const double      jump,
-        const double      node_penetration)
+        const double      node_penetration,
+        const bool        print_iterations = false)
   {
     using RunOutput::read_csv;
     using RunOutput::verdict;
@@ -116,6 +119,8 @@ namespace IroningCheck
     for (const auto &s : steps)
       cuts += static_cast<unsigned int>(s.at("cuts_before"));
     out << "load steps: " << steps.size() << ", step cuts: " << cuts << "\n";
+    if (print_iterations)
+      out << "Newton iterations: " << RunOutput::newton_iterations("run") << "\n";
     const auto fixed4 = [](double x) {
       if (std::abs(x) < 5e-5) // no "-0.0000"
         x = 0.;
@@ -145,7 +150,8 @@ namespace IroningCheck
                 const std::string &vertical,
                 const double       mean_ratio,
                 const double       jump,
-                const double       node_penetration)
+                const double       node_penetration,
+                const bool         print_iterations = false)
   {
     std::ofstream out("output");
     const auto    subdivisions = [](const unsigned int body, const std::string &cells) {
@@ -154,6 +160,6 @@ namespace IroningCheck
     };
     const int status =
       RunOutput::run_scene("run", scene, subdivisions(1, die) + subdivisions(2, block));
-    check(out, status, vertical, mean_ratio, jump, node_penetration);
+    check(out, status, vertical, mean_ratio, jump, node_penetration, print_iterations);
   }
 } // namespace IroningCheck

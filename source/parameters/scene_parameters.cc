@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/parameters/lists.h>
 #include <signorini/parameters/scene_parameters.h>
 #include <signorini/driver/study.h>
 
@@ -130,11 +131,26 @@ namespace Signorini
                         "Smallest step size, as a fraction of the end time, "
                         "that step cutting may reach before the run fails; in "
                         "(0, 1].");
+      prm.declare_entry("Sliding direction",
+                        "",
+                        Patterns::Anything(),
+                        "Steady sliding (e.g. ironing): the direction, one "
+                        "entry per coordinate, along which the body that the "
+                        "prescribed displacements move (the slider; one body) "
+                        "slides over the others. Each load step then starts "
+                        "from the previous state carried along by the step's "
+                        "prescribed motion along this direction, d: the "
+                        "slider shifted by d, and every other body's "
+                        "displacement at X taken from X - d, where the "
+                        "deformation was one step earlier (nodes with X - d "
+                        "outside their body keep theirs). Empty: each step "
+                        "starts from the previous state (with the tangent "
+                        "predictor of the prescribed increment).");
       prm.leave_subsection();
     }
 
     void
-    LoadStepping::parse_parameters(ParameterHandler &prm)
+    LoadStepping::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
       prm.enter_subsection("Load stepping");
       end_time          = prm.get_double("End time");
@@ -151,6 +167,25 @@ namespace Signorini
                          "must lie in (0, 1], got " +
                            prm.get("Minimum step fraction"));
       n_steps = steps;
+      sliding_direction.clear();
+      const std::string key = "Sliding direction";
+      const auto        n   = Utilities::split_string_list(prm.get(key)).size();
+      if (n > 0)
+        {
+          if (n != dim)
+            throw InputError("Load stepping > " + key,
+                             "needs " + std::to_string(dim) +
+                               " entries (Dimension), got '" + prm.get(key) + "'");
+          sliding_direction = get_list<double>(prm, key, dim, "Load stepping");
+          double norm = 0.;
+          for (const double x : sliding_direction)
+            norm += x * x;
+          if (!(norm > 0.))
+            throw InputError("Load stepping > " + key,
+                             "must not be the zero vector, got '" + prm.get(key) + "'");
+          for (double &x : sliding_direction)
+            x /= std::sqrt(norm);
+        }
       prm.leave_subsection();
     }
 
@@ -362,7 +397,7 @@ namespace Signorini
       if (bodies.empty())
         throw InputError("Body 1 > Active", "the scene has no active body");
 
-      load_stepping.parse_parameters(prm);
+      load_stepping.parse_parameters(prm, dim);
       solver.parse_parameters(prm, global.parameter_directory);
 
       prm.enter_subsection("Boundary conditions");

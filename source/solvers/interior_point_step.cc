@@ -19,7 +19,9 @@ namespace Signorini
                                             ConditionalOStream      &progress)
     : StepSolver<dim>(parameters, scene, problem, timer, progress)
     , minimizer(parameters.solver.interior_point, this->linear_solver, progress, timer)
-  {}
+  {
+    this->without_transport("Solver > Method = interior-point (not tried with sliding)");
+  }
 
   template <int dim>
   void

@@ -10,6 +10,7 @@ namespace Signorini
   IpoptStep<dim>::setup()
   {
     StepSolver<dim>::setup();
+    this->without_transport("Solver > Method = ipopt (not tried with sliding)");
     const auto *contact = this->problem.contact.get();
     ipopt = this->make_ipopt((contact && contact->has_constraints()) ? contact : nullptr,
                              this->problem.incompressibility.get());

@@ -24,7 +24,41 @@ namespace Signorini
     , timer(timer)
     , progress(progress)
     , linear_solver(parameters.solver.linear)
-  {}
+  {
+    if (const auto &e = parameters.load_stepping.sliding_direction; !e.empty())
+      {
+        Tensor<1, dim> direction;
+        for (unsigned int c = 0; c < dim; ++c)
+          direction[c] = e[c];
+        transport = std::make_unique<TransportPredictor<dim>>(direction);
+      }
+  }
+
+  template <int dim>
+  void
+  StepSolver<dim>::without_transport(const std::string &solver)
+  {
+    if (!transport)
+      return;
+    transport.reset();
+    progress << "Note: Load stepping > Sliding direction is not used with "
+             << solver << "; each load step starts from the previous state"
+             << std::endl;
+  }
+
+  template <int dim>
+  void
+  StepSolver<dim>::carry_along(const double time)
+  {
+    if (!transport)
+      return;
+    TimerOutput::Scope scope(timer, "transport");
+    const auto         result = transport->apply(scene, time);
+    if (result.shift.norm() > 0.)
+      progress << "    carried along by d = (" << result.shift << "): "
+               << result.carried << " nodes from X - d, " << result.kept
+               << " kept" << std::endl;
+  }
 
   template <int dim>
   void
@@ -184,6 +218,7 @@ namespace Signorini
                            const double                 time,
                            StepStatistics              &stats)
   {
+    carry_along(time);
     if (!scene.bc.has_prescribed_motion())
       return true;
     scene.solution_ghosted = scene.solution;

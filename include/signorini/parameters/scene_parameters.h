@@ -89,11 +89,14 @@ namespace Signorini
       double       end_time          = 1.;
       unsigned int n_steps           = 1;
       double       min_step_fraction = 1e-4;
+      /// Steady sliding: the slider's direction (dim entries, unit length),
+      /// or empty (TransportPredictor).
+      std::vector<double> sliding_direction;
 
       static void
       declare_parameters(ParameterHandler &prm);
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
     };
 
     /// "Solver": the step solver and the parameters of each algorithm.

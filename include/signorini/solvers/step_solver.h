@@ -4,6 +4,7 @@
 #include <signorini/output/json.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/solvers/newton.h>
+#include <signorini/solvers/transport_predictor.h>
 #include <signorini/output/report.h>
 #include <signorini/solvers/ipopt_solver.h>
 #include <signorini/parameters/scene_parameters.h>
@@ -113,6 +114,22 @@ namespace Signorini
 
   protected:
     /**
+     * With Load stepping > Sliding direction: carry the previous step's
+     * state along for the step to @p time (TransportPredictor) and say so
+     * on the progress stream. The Newton-based step solvers call it first
+     * (through predict()).
+     */
+    void
+    carry_along(const double time);
+
+    /**
+     * For step solvers the transport predictor is not used with: drop it,
+     * and say so on the progress stream (@p solver names the solver).
+     */
+    void
+    without_transport(const std::string &solver);
+
+    /**
      * The tangent predictor for prescribed boundary motion: one linear step
      * of @p objective towards the Dirichlet values at @p time. Returns false
      * (with the reason in @p stats) if it fails; does nothing if no
@@ -144,6 +161,8 @@ namespace Signorini
     TimerOutput             &timer;
     ConditionalOStream      &progress;
     LinearSolver             linear_solver;
+    /// Set with Load stepping > Sliding direction.
+    std::unique_ptr<TransportPredictor<dim>> transport;
   };
 
   /**
