@@ -156,6 +156,10 @@ main()
   run_case("zero_steps", scene({{"@STEPS@", "set Number of steps = 0"}}), out);
   run_case("negative_steps", scene({{"@STEPS@", "set Number of steps = -2"}}), out);
   run_case("negative_end_time", scene({{"@STEPS@", "set End time = -1"}}), out);
+  run_case("sliding_direction_length",
+           scene({{"@STEPS@", "set Sliding direction = 1, 0, 0"}}), out);
+  run_case("sliding_direction_zero", scene({{"@STEPS@", "set Sliding direction = 0, 0"}}),
+           out);
   run_case("bad_dimension", replace(scene({}), "set Dimension = 2", "set Dimension = 4"), out);
   run_case("missing_boundary_id",
            replace(scene({}), "set Fixed boundaries = 2: xy", "set Fixed boundaries = 7: x"), out);
