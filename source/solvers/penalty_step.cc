@@ -16,9 +16,11 @@ namespace Signorini
     : StepSolver<dim>(parameters, scene, problem, timer, progress)
     , ipopt_stages(ipopt_stages)
   {
-    // From the carried state Ipopt's stages crawled (steps of 1e-4 of its
-    // Newton step, 500 iterations per sliding step on prm/hard/ironing_full;
-    // Newton took 4 from the same state): not understood yet.
+    // From the carried state Ipopt's stages crawled: the exact contact
+    // Hessian is indefinite there, Ipopt's inertia correction added
+    // delta = 1e4..1e5 (lg(rg) 4.2-5.0 in ipopt.out) and its steps were
+    // 1e-6 long, 500 iterations per sliding step on prm/hard/ironing_full.
+    // Newton takes the convexified contact Hessian and needed 4.
     if (ipopt_stages)
       this->without_transport("Ipopt as the stage solver (Solver > Method = ipopt)");
   }
