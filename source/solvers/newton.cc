@@ -497,7 +497,8 @@ namespace Signorini
                              VectorType                      &ghosted,
                              MatrixType                      &hessian,
                              VectorType                      &rhs,
-                             std::string                     &reason)
+                             std::string                     &reason,
+                             const bool                       only_if_lower)
   {
     Evaluation e;
     {
@@ -545,6 +546,28 @@ namespace Signorini
             return false;
           }
         scale = scale > 1. / 64. ? scale / 2. : 0.;
+      }
+    if (only_if_lower && scale > 0.)
+      {
+        // The Dirichlet increment alone, if it is lower (a Newton step from
+        // a start near the solution can climb where the Hessian is
+        // indefinite).
+        VectorType alone(u);
+        alone.add(1., dirichlet);
+        Evaluation a;
+        {
+          TimerOutput::Scope scope(timer, "line search");
+          ghosted = alone;
+          a       = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+        }
+        if (a.admissible && a.value <= e.value)
+          {
+            progress << "      predictor: the linear step raises the energy ("
+                     << e.value << " against " << a.value
+                     << "); the Dirichlet increment alone" << std::endl;
+            u = alone;
+            return true;
+          }
       }
     if (scale < 1.)
       {

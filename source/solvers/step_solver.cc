@@ -47,17 +47,18 @@ namespace Signorini
   }
 
   template <int dim>
-  void
+  bool
   StepSolver<dim>::carry_along(const double time)
   {
     if (!transport)
-      return;
+      return false;
     TimerOutput::Scope scope(timer, "transport");
     const auto         result = transport->apply(scene, time);
     if (result.shift.norm() > 0.)
       progress << "    carried along by d = (" << result.shift << "): "
                << result.carried << " nodes from X - d, " << result.kept
                << " kept" << std::endl;
+    return result.shift.norm() > 0.;
   }
 
   template <int dim>
@@ -218,7 +219,7 @@ namespace Signorini
                            const double                 time,
                            StepStatistics              &stats)
   {
-    carry_along(time);
+    const bool carried = carry_along(time);
     if (!scene.bc.has_prescribed_motion())
       return true;
     scene.solution_ghosted = scene.solution;
@@ -226,7 +227,7 @@ namespace Signorini
     std::string                     reason;
     if (!newton.predictor(objective, increment, scene.solution,
                           scene.solution_ghosted, scene.hessian, scene.rhs,
-                          reason))
+                          reason, carried))
       {
         stats.reason = "predictor: " + reason;
         return false;

@@ -147,7 +147,9 @@ namespace Signorini
      * 1/2, ..., 1/64, 0), so that a linear step that overshoots (through
      * the contact layer, or to J <= 0) does not cost a load step cut.
      * Returns false (u unchanged) if even the Dirichlet increment alone
-     * is inadmissible.
+     * is inadmissible. With @p only_if_lower the step is kept only if its
+     * energy is below that of the Dirichlet increment alone (for a start
+     * that is already close: TransportPredictor).
      */
     bool
     predictor(Objective                       &objective,
@@ -156,7 +158,8 @@ namespace Signorini
               VectorType                      &ghosted,
               MatrixType                      &hessian,
               VectorType                      &rhs,
-              std::string                     &reason);
+              std::string                     &reason,
+              const bool                       only_if_lower = false);
 
   private:
     bool

@@ -116,10 +116,11 @@ namespace Signorini
     /**
      * With Load stepping > Sliding direction: carry the previous step's
      * state along for the step to @p time (TransportPredictor) and say so
-     * on the progress stream. The Newton-based step solvers call it first
-     * (through predict()).
+     * on the progress stream; true if it moved the state. The Newton-based
+     * step solvers call it first (through predict(), whose tangent step
+     * then has to lower the energy to be kept).
      */
-    void
+    bool
     carry_along(const double time);
 
     /**
