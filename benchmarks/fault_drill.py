@@ -13,7 +13,9 @@ stop. Every interruption must leave a valid summary.json (status
 
 The moments: each interruption comes after a random fraction (uniform in
 [0.2, 1.8] / N) of the reference run's wall time, so the N interruptions
-spread over the whole path. Prints a table of the interruptions and the
+spread over the whole path. A signal during the process's start-up (the
+loader and MPI, about 0.2 s, before the program can catch it) ends it with
+-15; that attempt is valid if it left the output folder as it was. Prints a table of the interruptions and the
 verdict, and writes it as JSON into the output folder.
 """
 
@@ -22,6 +24,7 @@ import csv
 import json
 import os
 import random
+import shutil
 import signal
 import subprocess
 import sys
@@ -31,6 +34,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def write_scene(folder, scene):
+    # A fresh folder: a run left there by an earlier drill would be taken
+    # for this one's.
+    shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder, exist_ok=True)
     prm = os.path.join(folder, "scene.prm")
     with open(prm, "w") as out:
@@ -49,8 +55,11 @@ def status_of(run):
 
 
 def rows(path):
-    with open(path) as f:
-        return list(csv.reader(f))
+    try:
+        with open(path) as f:
+            return list(csv.reader(f))
+    except FileNotFoundError:
+        return []
 
 
 def main():
@@ -76,7 +85,9 @@ def main():
     drill = os.path.join(args.output, "drill")
     prm = write_scene(drill, args.scene)
     run = os.path.join(drill, "run")
-    command = [exe, prm]
+    fresh = [exe, prm]
+    command = fresh
+    previous = ("not started", 0)
     log = []
     ok = True
     for k in range(args.interrupts):
@@ -86,10 +97,18 @@ def main():
         time.sleep(delay)
         process.send_signal(signal.SIGTERM)
         code = process.wait()
-        status = status_of(run)
-        steps = len(rows(os.path.join(run, "load_steps.csv"))) - 1
+        # A signal that comes while the loader and MPI start (about 0.2 s)
+        # ends the process before it can catch it: valid if it wrote
+        # nothing, so that the folder is as the previous attempt left it
+        # (and the next attempt is the same command).
+        started = os.path.isdir(run)
+        status = status_of(run) if started else "not started"
+        steps = max(len(rows(os.path.join(run, "load_steps.csv"))) - 1, 0)
         valid = (status == "interrupted" and code == 143) or \
-                (status == "converged" and code == 0)
+                (status == "converged" and code == 0) or \
+                (status == "not started" and code == 143) or \
+                (code == -signal.SIGTERM and (status, steps) == previous)
+        previous = (status, steps)
         ok = ok and valid
         log.append({"interruption": k + 1, "after [s]": round(delay, 2),
                     "exit code": code, "status": status,
@@ -98,7 +117,7 @@ def main():
               % (k + 1, delay, code, status, steps, "" if valid else "  INVALID"))
         if status == "converged":
             break
-        command = [exe, "--restart", run]
+        command = [exe, "--restart", run] if started else fresh
     if status_of(run) != "converged":
         code = subprocess.call(command, stdout=subprocess.DEVNULL)
         print("last restart: exit %d, %s" % (code, status_of(run)))
