@@ -12,6 +12,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -19,6 +21,17 @@
 
 namespace Signorini
 {
+  namespace
+  {
+    /// @p what, with the system's reason for the last failed call of this
+    /// thread if it set one (errno, cleared before the calls checked).
+    std::string
+    system_reason(const std::string &what)
+    {
+      return errno != 0 ? what + ": " + std::strerror(errno) : what;
+    }
+  } // namespace
+
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &parameter_file,
@@ -485,11 +498,13 @@ namespace Signorini
     const std::string  final_folder = Checkpoint::folder(output, sequence);
     const std::string  folder =
       Checkpoint::root(output) + "/.writing-" + std::to_string(sequence);
+    // A checkpoint that cannot be written ends the run as a failed output:
+    // summary.json says why, and the last checkpoint and field frames stay.
     auto collective_check = [&](std::string error, const std::string &what) {
       error = Utilities::MPI::broadcast(comm, error, 0);
       if (!error.empty())
-        throw std::runtime_error("cannot " + what + " the checkpoint " +
-                                 final_folder + ": " + error);
+        throw OutputFailure("cannot " + what + " the checkpoint " +
+                            final_folder + ": " + error);
     };
     {
       std::string error;
@@ -500,6 +515,33 @@ namespace Signorini
           std::filesystem::create_directories(folder, ec);
           if (ec)
             error = ec.message();
+          else
+            {
+              // p4est aborts the whole process when it cannot write the
+              // mesh (MPI-IO on a full disk), so the space is checked
+              // first, against a bound on what the checkpoint writes: the
+              // mesh (p4est's quadrants, 12 bytes a cell here), the two
+              // vectors on each cell (deal.II's fixed-size data), each
+              // rank's state file (the two vectors and the report) and
+              // the parameters, with a quarter more.
+              const double cells = static_cast<double>(scene->n_cells);
+              const double per_cell =
+                32. + 16. + 2. * 8. * scene->dof_handler.get_fe().n_dofs_per_cell();
+              const double needed =
+                1.25 * (cells * per_cell + 2. * 8. * static_cast<double>(scene->n_dofs) +
+                        2048. * (report.steps.size() + report.cycles.size()) +
+                        used_parameters.size() + 65536. * report.n_ranks);
+              const auto space = std::filesystem::space(folder, ec);
+              if (!ec && static_cast<double>(space.available) < needed)
+                {
+                  std::ostringstream text;
+                  text << std::setprecision(3) << "its file system has "
+                       << space.available / 1e6 << " MB free, the checkpoint "
+                       << "needs about " << needed / 1e6 << " MB";
+                  error = text.str();
+                  std::filesystem::remove_all(folder, ec);
+                }
+            }
         }
       collective_check(error, "create");
     }
@@ -516,14 +558,19 @@ namespace Signorini
     Report saved          = resumed_report();
     saved.timing          = run_times(run_timer);
     {
-      // A write error throws from the archive on this rank only: caught
-      // here, it is every rank's failure below.
-      bool ok = true;
+      // A write error throws from the archive, or leaves the stream
+      // failed, on this rank only: its reason (the file, and the system's
+      // word for what went wrong) becomes every rank's failure, named
+      // after the lowest rank that met one.
+      const std::string file =
+        Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
+      std::string error;
       try
         {
-          std::ofstream out(
-            Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm)),
-            std::ios::binary);
+          errno = 0;
+          std::ofstream out(file, std::ios::binary);
+          if (!out)
+            throw std::runtime_error(system_reason("cannot open it"));
           {
             OutputArchive archive(out);
             archive << header;
@@ -542,14 +589,20 @@ namespace Signorini
               }
           }
           out.flush();
-          ok = static_cast<bool>(out);
+          if (!out)
+            throw std::runtime_error(system_reason("writing failed"));
+          out.close();
+          if (!out)
+            throw std::runtime_error(system_reason("closing failed"));
         }
-      catch (const std::exception &)
+      catch (const std::exception &e)
         {
-          ok = false;
+          error = file + ": " + e.what();
         }
-      if (Utilities::MPI::min(ok ? 1 : 0, comm) == 0)
-        collective_check("a state file could not be written", "write");
+      error = first_error(comm, error);
+      if (!error.empty())
+        throw OutputFailure("cannot write the checkpoint " + final_folder +
+                            ": " + error);
     }
     {
       std::string error;
@@ -797,16 +850,29 @@ namespace Signorini
         report.status            = "interrupted";
         report.interrupt_signal  = e.signal_number;
         report.interrupted_during = during;
-        checkpoint(run_timer, true);
-        report.reason = Interruption::signal_name(e.signal_number) +
-                        " received during " + during +
-                        "; the last converged step (t = " +
-                        std::to_string(report.final_time) +
-                        ") is on disk; continue with: " +
-                        (report.n_ranks > 1 ?
-                           "mpirun -np " + std::to_string(report.n_ranks) + " " :
-                           std::string()) +
-                        "signorini --restart " + output_directory;
+        std::string no_checkpoint;
+        try
+          {
+            checkpoint(run_timer, true);
+          }
+        catch (const OutputFailure &f)
+          {
+            no_checkpoint = f.what();
+          }
+        const std::string signal = Interruption::signal_name(e.signal_number) +
+                                   " received during " + during;
+        if (no_checkpoint.empty())
+          report.reason = signal + "; the last converged step (t = " +
+                          std::to_string(report.final_time) +
+                          ") is on disk; continue with: " +
+                          (report.n_ranks > 1 ?
+                             "mpirun -np " + std::to_string(report.n_ranks) + " " :
+                             std::string()) +
+                          "signorini --restart " + output_directory;
+        else
+          report.reason = signal + "; the last converged step (t = " +
+                          std::to_string(report.final_time) +
+                          ") has its field output on disk, but " + no_checkpoint;
         pcout << "Run interrupted: " << report.reason << std::endl;
       }
 
