@@ -63,6 +63,9 @@ main()
         << (reason.find("no such folder/summary.json") != std::string::npos ?
               ", the reason names the file" :
               ", no reason")
+        << (reason.find("No such file or directory") != std::string::npos ?
+              " and the system's reason" :
+              "")
         << "\n";
   }
 }

@@ -1,5 +1,7 @@
 #include <signorini/output/atomic_file.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -7,10 +9,16 @@
 
 namespace Signorini
 {
+  std::string
+  write_failure(const std::string &path)
+  {
+    return "cannot write " + path + (errno != 0 ? std::string(": ") + std::strerror(errno) : "");
+  }
+
   AtomicFile::AtomicFile(const std::string &path)
     : path(path)
     , temporary(path + ".tmp." + std::to_string(::getpid()))
-    , out(temporary)
+    , out((errno = 0, temporary))
   {}
 
   AtomicFile::~AtomicFile()
@@ -35,8 +43,8 @@ namespace Signorini
     if (!written || out.fail() || ec)
       {
         if (reason)
-          *reason = "cannot write " + path +
-                    (ec ? ": " + ec.message() : std::string(""));
+          *reason = ec ? "cannot write " + path + ": " + ec.message() :
+                         write_failure(path);
         std::filesystem::remove(temporary, ec);
         return false;
       }

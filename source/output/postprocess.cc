@@ -546,8 +546,16 @@ namespace Signorini
                                       n * (k + 1) / parts.size()));
           const auto write_piece = [&parts, &frame, &flags, &paths](const unsigned int k) {
             AtomicFile file(paths[k]);
-            DataOutBase::write_vtu(parts[k], frame.names, frame.ranges, flags,
-                                   file.stream());
+            try
+              {
+                DataOutBase::write_vtu(parts[k], frame.names, frame.ranges,
+                                       flags, file.stream());
+              }
+            catch (const ExcIO &)
+              {
+                // deal.II's message says only that some I/O failed.
+                throw std::runtime_error(write_failure(paths[k]));
+              }
             std::string reason;
             if (!file.commit(&reason)) // the reason names the file
               throw std::runtime_error(reason);

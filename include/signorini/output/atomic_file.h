@@ -6,6 +6,14 @@
 namespace Signorini
 {
   /**
+   * "cannot write @p path", with the system's reason (errno) if the failed
+   * call of this thread set one: for a stream that has failed, where the
+   * caller cleared errno before writing to it.
+   */
+  std::string
+  write_failure(const std::string &path);
+
+  /**
    * An output file that is never seen half written: the text goes to a
    * temporary file beside it (same folder, so the rename cannot cross
    * file systems), and commit() renames that over the final name in one

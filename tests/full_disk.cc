@@ -1,4 +1,7 @@
-// A checkpoint on a full disk (doc/robustness.md): p4est aborts the whole
+// A full disk (doc/robustness.md). Field output that does not fit ends the
+// run with exit status 3 and a summary.json reason that names the file and
+// the system's reason (deal.II's own message said only that some I/O
+// failed), keeping the frames written before. A checkpoint: p4est aborts the whole
 // process when it cannot write the mesh (MPI-IO), so the program checks the
 // free space before it writes a checkpoint. The run then ends as a failed
 // output (exit status 3, summary.json's status "failed" with a reason that
@@ -21,6 +24,9 @@ using RunOutput::verdict;
 
 namespace
 {
+  /// check()'s @p kept for the case of field output without checkpoints.
+  constexpr unsigned int fields = 99;
+
   /// A tmpfs of @p size mounted at @p folder while this object lives.
   struct Mount
   {
@@ -55,8 +61,10 @@ namespace
     std::ofstream(name + ".prm")
       << "include " << SIGNORINI_SOURCE_DIR << "/prm/default.prm\n"
       << "set Output directory = " << out << "\n"
-      << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n"
-      << "subsection Checkpoint\n  set Write checkpoints = true\n"
+      << "subsection Output\n  set Format = " << (kept == fields ? "vtu" : "none")
+      << "\n  set Verbosity = quiet\nend\n"
+      << "subsection Checkpoint\n  set Write checkpoints = "
+      << (kept == fields ? "false" : "true") << "\n"
       << "  set Every load steps = 1\nend\n";
     const auto run = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) + " " +
                                         name + ".prm > /dev/null 2>&1; echo $?");
@@ -83,6 +91,18 @@ namespace
           else
             ++other;
         }
+    if (kept == fields)
+      {
+        std::cout << name << " (" << size << "): exit status 3: " << verdict(code == "3")
+                  << "; status failed: " << verdict(status == "failed")
+                  << "; reason names the file and 'No space left on device': "
+                  << verdict(reason.find("field output: cannot write " + out +
+                                         "/solution_0000.") != std::string::npos &&
+                             reason.find(".vtu: No space left on device") !=
+                               std::string::npos)
+                  << std::endl;
+        return;
+      }
     std::cout << name << " (" << size << "): exit status 3: " << verdict(code == "3")
               << "; status failed: " << verdict(status == "failed")
               << "; reason names the checkpoint and the space: "
@@ -97,6 +117,7 @@ namespace
 int
 main()
 {
+  check("no_room_for_fields", "200k", fields);
   check("no_room", "400k", 0);
   check("room_for_one", "2000k", 1);
 }
