@@ -796,18 +796,30 @@ namespace Signorini
     // summary of an earlier run in the same folder.
     report.status = "running";
     summary();
+    // The first frame (HDF5 writes it here and now) failing is the run's
+    // failed output, reported below like any other.
+    std::string first_frame_error;
     if (restart_folder.empty())
       {
         load_steps->start(report.iteration_name, dim);
         scene->solution         = 0.;
         scene->solution_ghosted = scene->solution;
-        postprocessor->write_output(scene->solution_ghosted, 0., 0, false);
+        try
+          {
+            postprocessor->write_output(scene->solution_ghosted, 0., 0, false);
+          }
+        catch (const OutputFailure &e)
+          {
+            first_frame_error = e.what();
+          }
       }
     else
       scene->solution_ghosted = scene->solution;
     snapshot();
     try
       {
+        if (!first_frame_error.empty())
+          throw OutputFailure(first_frame_error);
         if (report.cycles.empty())
           load_path(run_timer);
         refinement_cycles(run_timer);

@@ -12,6 +12,10 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <hdf5.h>
+
+#include <cerrno>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -594,12 +598,40 @@ namespace Signorini
         data_out.write_filtered_data(filter);
         const std::string h5 =
           series + "-" + Utilities::int_to_string(step, 4) + ".h5";
-        data_out.write_hdf5_parallel(filter, output_directory + "/" + h5, comm);
-        xdmf_entries[series].push_back(
-          data_out.create_xdmf_entry(filter, h5, time, comm));
-        data_out.write_xdmf_file(xdmf_entries[series],
-                                 output_directory + "/" + series + ".xdmf",
-                                 comm);
+        // deal.II reports a failed HDF5 or XDMF write (a full disk) as an
+        // I/O assertion that names neither the file nor the cause: a failed
+        // output with the file's name instead, on every rank.
+        std::string error, file = output_directory + "/" + h5;
+        try
+          {
+            errno = 0;
+            data_out.write_hdf5_parallel(filter, file, comm);
+            xdmf_entries[series].push_back(
+              data_out.create_xdmf_entry(filter, h5, time, comm));
+            file = output_directory + "/" + series + ".xdmf";
+            errno = 0;
+            data_out.write_xdmf_file(xdmf_entries[series], file, comm);
+          }
+        catch (const std::exception &)
+          {
+            error = write_failure(file);
+          }
+        error = first_error(comm, error);
+        if (!error.empty())
+          {
+            // A half-written .h5 goes: it is in no series, and on a full
+            // disk its space is what summary.json needs to say why. deal.II
+            // leaves the file open when it throws; H5close() closes every
+            // HDF5 identifier (the library starts again if called again).
+            H5close();
+            if (Utilities::MPI::this_mpi_process(comm) == 0 &&
+                file == output_directory + "/" + h5)
+              {
+                std::error_code ec;
+                std::filesystem::remove(file, ec);
+              }
+            throw OutputFailure("field output: " + error);
+          }
       }
   }
 
