@@ -101,7 +101,7 @@ namespace
                   << "; status failed: " << verdict(status == "failed")
                   << "; reason names the file and 'No space left on device': "
                   << verdict(reason.find("field output: cannot write " + out +
-                                         "/solution_0000.") != std::string::npos &&
+                                         "/solution_") != std::string::npos &&
                              reason.find(".vtu: No space left on device") !=
                                std::string::npos)
                   << std::endl;

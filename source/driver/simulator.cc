@@ -13,7 +13,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -21,17 +20,6 @@
 
 namespace Signorini
 {
-  namespace
-  {
-    /// @p what, with the system's reason for the last failed call of this
-    /// thread if it set one (errno, cleared before the calls checked).
-    std::string
-    system_reason(const std::string &what)
-    {
-      return errno != 0 ? what + ": " + std::strerror(errno) : what;
-    }
-  } // namespace
-
   template <int dim>
   Simulator<dim>::Simulator(ParameterHandler  &prm,
                             const std::string &parameter_file,
@@ -569,8 +557,6 @@ namespace Signorini
         {
           errno = 0;
           std::ofstream out(file, std::ios::binary);
-          if (!out)
-            throw std::runtime_error(system_reason("cannot open it"));
           {
             OutputArchive archive(out);
             archive << header;
@@ -588,21 +574,26 @@ namespace Signorini
                 archive << values;
               }
           }
-          out.flush();
-          if (!out)
-            throw std::runtime_error(system_reason("writing failed"));
           out.close();
           if (!out)
-            throw std::runtime_error(system_reason("closing failed"));
+            error = write_failure(file);
         }
-      catch (const std::exception &e)
+      catch (const std::exception &)
         {
-          error = file + ": " + e.what();
+          // The archive on a stream that failed (to open, or to write).
+          error = write_failure(file);
         }
       error = first_error(comm, error);
       if (!error.empty())
-        throw OutputFailure("cannot write the checkpoint " + final_folder +
-                            ": " + error);
+        {
+          // Nothing half written stays (and its space is free for
+          // summary.json).
+          std::error_code ec;
+          if (root)
+            std::filesystem::remove_all(folder, ec);
+          throw OutputFailure("cannot write the checkpoint " + final_folder +
+                              ": " + error);
+        }
     }
     {
       std::string error;

@@ -12,12 +12,15 @@ namespace Signorini
   std::string
   write_failure(const std::string &path)
   {
-    return "cannot write " + path + (errno != 0 ? std::string(": ") + std::strerror(errno) : "");
+    return "cannot write " + path +
+           (errno != 0 ? std::string(": ") + std::strerror(errno) : "");
   }
 
   AtomicFile::AtomicFile(const std::string &path)
     : path(path)
     , temporary(path + ".tmp." + std::to_string(::getpid()))
+    // errno cleared before the file is opened: commit() reports the
+    // system's reason for a failed open or write.
     , out((errno = 0, temporary))
   {}
 
