@@ -26,9 +26,14 @@ using RunOutput::verdict;
 
 namespace
 {
-  /// check()'s @p kept for the cases of field output (VTU, HDF5) without
-  /// checkpoints.
-  constexpr unsigned int fields = 99, hdf5 = 98;
+  /// What fills the disk: VTU or HDF5 frames (no checkpoints), or
+  /// checkpoints (no fields).
+  enum class Writes
+  {
+    vtu,
+    hdf5,
+    checkpoints
+  };
 
   /// A tmpfs of @p size mounted at @p folder while this object lives.
   struct Mount
@@ -50,8 +55,13 @@ namespace
     bool        mounted = false;
   };
 
+  /// A run of the default scene on a tmpfs of @p size; with checkpoints,
+  /// @p kept of them fit.
   void
-  check(const std::string &name, const std::string &size, const unsigned int kept)
+  check(const std::string &name,
+        const std::string &size,
+        const Writes       writes,
+        const unsigned int kept = 0)
   {
     const std::string folder = std::filesystem::absolute(name).string();
     Mount             disk(folder, size);
@@ -65,10 +75,10 @@ namespace
       << "include " << SIGNORINI_SOURCE_DIR << "/prm/default.prm\n"
       << "set Output directory = " << out << "\n"
       << "subsection Output\n  set Format = "
-      << (kept == fields ? "vtu" : kept == hdf5 ? "hdf5" : "none")
+      << (writes == Writes::vtu ? "vtu" : writes == Writes::hdf5 ? "hdf5" : "none")
       << "\n  set Verbosity = quiet\nend\n"
       << "subsection Checkpoint\n  set Write checkpoints = "
-      << (kept >= hdf5 ? "false" : "true") << "\n"
+      << (writes == Writes::checkpoints ? "true" : "false") << "\n"
       << "  set Every load steps = 1\nend\n";
     const auto run = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) + " " +
                                         name + ".prm > /dev/null 2>&1; echo $?");
@@ -79,64 +89,58 @@ namespace
       out + "/summary.json 2>/dev/null");
     const std::string status = summary.second.substr(0, summary.second.find('\n'));
     const std::string reason = summary.second.substr(summary.second.find('\n') + 1);
-    const std::string failed_folder =
-      "checkpoint-" + std::string(6 - std::to_string(kept).size(), '0') +
-      std::to_string(kept);
-    unsigned int complete = 0, other = 0;
-    if (std::filesystem::is_directory(out + "/checkpoints"))
-      for (const auto &entry : std::filesystem::directory_iterator(out + "/checkpoints"))
-        {
-          const auto p = entry.path();
-          if (p.filename().string().rfind("checkpoint-", 0) == 0 &&
-              std::filesystem::exists(p / "state-0.bin") &&
-              std::filesystem::exists(p / "mesh") &&
-              std::filesystem::exists(p / "parameters.prm"))
-            ++complete;
-          else
-            ++other;
-        }
-    if (kept == fields)
-      {
-        std::cout << name << " (" << size << "): exit status 3: " << verdict(code == "3")
-                  << "; status failed: " << verdict(status == "failed")
-                  << "; reason names the file and 'No space left on device': "
-                  << verdict(reason.find("field output: cannot write " + out +
-                                         "/solution_") != std::string::npos &&
-                             reason.find(".vtu: No space left on device") !=
-                               std::string::npos)
-                  << std::endl;
-        return;
-      }
-    if (kept == hdf5)
-      {
-        // The .h5 that did not fit is removed (deal.II left it open and
-        // half written, holding the space summary.json needs).
-        std::cout << name << " (" << size << "): exit status 3: " << verdict(code == "3")
-                  << "; status failed: " << verdict(status == "failed")
-                  << "; reason names the file: "
-                  << verdict(reason.find("field output: cannot write " + out +
-                                         "/solution-0000.h5") != std::string::npos)
-                  << "; .h5 left: "
-                  << (std::filesystem::exists(out + "/solution-0000.h5") ? "yes" : "no")
-                  << std::endl;
-        return;
-      }
+    const auto        names  = [&reason](const std::string &text) {
+      return reason.find(text) != std::string::npos;
+    };
+
     std::cout << name << " (" << size << "): exit status 3: " << verdict(code == "3")
-              << "; status failed: " << verdict(status == "failed")
-              << "; reason names the checkpoint and the space: "
-              << verdict(reason.find("cannot create the checkpoint") != std::string::npos &&
-                         reason.find(failed_folder) != std::string::npos &&
-                         reason.find("MB free") != std::string::npos)
-              << "; complete checkpoints kept: " << complete
-              << "; other entries: " << other << std::endl;
+              << "; status failed: " << verdict(status == "failed");
+    if (writes == Writes::vtu)
+      std::cout << "; reason names the file and 'No space left on device': "
+                << verdict(names("field output: cannot write " + out + "/solution_") &&
+                           names(".vtu: No space left on device"));
+    else if (writes == Writes::hdf5)
+      // The .h5 that did not fit is removed (deal.II left it open and half
+      // written, holding the space summary.json needs).
+      std::cout << "; reason names the file: "
+                << verdict(names("field output: cannot write " + out +
+                                 "/solution-0000.h5"))
+                << "; .h5 left: "
+                << (std::filesystem::exists(out + "/solution-0000.h5") ? "yes" : "no");
+    else
+      {
+        const std::string failed_folder =
+          "checkpoint-" + std::string(6 - std::to_string(kept).size(), '0') +
+          std::to_string(kept);
+        unsigned int complete = 0, other = 0;
+        if (std::filesystem::is_directory(out + "/checkpoints"))
+          for (const auto &entry :
+               std::filesystem::directory_iterator(out + "/checkpoints"))
+            {
+              const auto p = entry.path();
+              if (p.filename().string().rfind("checkpoint-", 0) == 0 &&
+                  std::filesystem::exists(p / "state-0.bin") &&
+                  std::filesystem::exists(p / "mesh") &&
+                  std::filesystem::exists(p / "parameters.prm"))
+                ++complete;
+              else
+                ++other;
+            }
+        std::cout << "; reason names the checkpoint and the space: "
+                  << verdict(names("cannot create the checkpoint") &&
+                             names(failed_folder) && names("MB free"))
+                  << "; complete checkpoints kept: " << complete
+                  << "; other entries: " << other;
+      }
+    std::cout << std::endl;
   }
 } // namespace
 
 int
 main()
 {
-  check("no_room_for_fields", "200k", fields);
-  check("no_room_for_hdf5", "2000k", hdf5);
-  check("no_room", "400k", 0);
-  check("room_for_one", "2000k", 1);
+  check("no_room_for_fields", "200k", Writes::vtu);
+  check("no_room_for_hdf5", "2000k", Writes::hdf5);
+  check("no_room", "400k", Writes::checkpoints, 0);
+  check("room_for_one", "2000k", Writes::checkpoints, 1);
 }

@@ -862,20 +862,17 @@ namespace Signorini
           {
             no_checkpoint = f.what();
           }
-        const std::string signal = Interruption::signal_name(e.signal_number) +
-                                   " received during " + during;
-        if (no_checkpoint.empty())
-          report.reason = signal + "; the last converged step (t = " +
-                          std::to_string(report.final_time) +
-                          ") is on disk; continue with: " +
-                          (report.n_ranks > 1 ?
-                             "mpirun -np " + std::to_string(report.n_ranks) + " " :
-                             std::string()) +
-                          "signorini --restart " + output_directory;
-        else
-          report.reason = signal + "; the last converged step (t = " +
-                          std::to_string(report.final_time) +
-                          ") has its field output on disk, but " + no_checkpoint;
+        report.reason = Interruption::signal_name(e.signal_number) +
+                        " received during " + during +
+                        "; the last converged step (t = " +
+                        std::to_string(report.final_time) + ")" +
+                        (no_checkpoint.empty() ?
+                           " is on disk; continue with: " +
+                             (report.n_ranks > 1 ?
+                                "mpirun -np " + std::to_string(report.n_ranks) + " " :
+                                std::string()) +
+                             "signorini --restart " + output_directory :
+                           " has its field output on disk, but " + no_checkpoint);
         pcout << "Run interrupted: " << report.reason << std::endl;
       }
 
