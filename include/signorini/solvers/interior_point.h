@@ -46,6 +46,9 @@ namespace Signorini
     parse_parameters(ParameterHandler &prm);
   };
 
+  template <int dim>
+  class InteriorPointIteration;
+
   /**
    * A primal-dual interior point method for
    *
@@ -181,7 +184,9 @@ namespace Signorini
     load_state(InputArchive &archive);
 
   private:
-    using State = typename Contact::Model<dim>::ConstraintState;
+    // One call of minimize(), in named phases; it reads and keeps the
+    // warm-start data below.
+    friend class InteriorPointIteration<dim>;
 
     Parameters          parameters;
     const LinearSolver &linear_solver;
