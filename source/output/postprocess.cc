@@ -167,9 +167,8 @@ namespace Signorini
     }
   } // namespace
 
-  template <int dim>
   void
-  Postprocessor<dim>::declare_parameters(ParameterHandler &prm)
+  PostprocessParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Postprocess");
     {

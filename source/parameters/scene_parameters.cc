@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/material/interface.h>
 #include <signorini/parameters/lists.h>
 #include <signorini/parameters/scene_parameters.h>
 #include <signorini/driver/study.h>
@@ -222,7 +223,7 @@ namespace Signorini
                         "condensed onto the displacement and solved by the "
                         "Linear solver; runs with MPI).");
       prm.enter_subsection("Newton");
-      NewtonMinimizer::Parameters::declare_parameters(prm);
+      NewtonParameters::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Penalty");
       ContinuationParameters::declare_parameters(prm);
@@ -350,7 +351,7 @@ namespace Signorini
       LoadStepping::declare_parameters(prm);
       Solver::declare_parameters(prm);
       Contact::declare_parameters(prm);
-      Postprocessor<2>::declare_parameters(prm);
+      PostprocessParameters::declare_parameters(prm);
       CheckpointParameters::declare_parameters(prm);
     }
 

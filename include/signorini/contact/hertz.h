@@ -1,6 +1,6 @@
 #pragma once
 
-#include <signorini/output/postprocess.h>
+#include <signorini/output/quantity.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/contact/two_body_parameters.h>
+
 #include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/indicator.h>
 #include <signorini/contact/model.h>
@@ -37,35 +39,6 @@ namespace Signorini
      */
     void
     project_to_positive_semidefinite(FullMatrix<double> &H);
-
-    /// The "Contact > Two bodies" subsection.
-    struct TwoBodyParameters
-    {
-      types::boundary_id target_boundary = 0;
-      bool               integral        = false;
-      unsigned int       gauss_points    = 2;
-      double             stretch         = 0.12;
-      double             apex_depth      = 1.;
-      double             search_margin   = 1.;
-      double             max_motion      = 0.5;
-      double             end_stretch     = 1.;
-      /// 'Indicator shape'.
-      IndicatorShape     shape           = IndicatorShape::partition;
-      /// 'Hessian': which pair Hessians are projected (negative
-      /// eigenvalues clipped).
-      enum class HessianMode
-      {
-        exact,
-        projected,
-        adaptive
-      };
-      HessianMode hessian_mode = HessianMode::adaptive;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
 
     /**
      * Frictionless contact between two deformable bodies through the

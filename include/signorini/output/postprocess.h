@@ -1,5 +1,9 @@
 #pragma once
 
+#include <signorini/output/quantity.h>
+
+#include <signorini/output/postprocess_parameters.h>
+
 #include <signorini/archive.h>
 
 #include <signorini/problem/energy_functional.h>
@@ -27,65 +31,6 @@ namespace Signorini
 {
   using namespace dealii;
 
-  /// A computed quantity of interest, with its reference where one exists.
-  struct Quantity
-  {
-    std::string name;
-    double      value         = 0.;
-    bool        has_reference = false;
-    double      reference     = 0.;
-    double      tolerance     = 0.; // relative; 0: not checked
-
-    double
-    relative_error() const
-    {
-      return std::abs(value - reference) /
-             std::max(std::abs(reference), 1e-300);
-    }
-    bool
-    within_tolerance() const
-    {
-      return !has_reference || tolerance <= 0. || relative_error() <= tolerance;
-    }
-
-    template <class Archive>
-    void
-    serialize(Archive &ar, const unsigned int)
-    {
-      ar &name &value &has_reference &reference &tolerance;
-    }
-  };
-
-  /// The "Postprocess" and "Output" subsections, parsed.
-  struct PostprocessParameters
-  {
-    int          mean_displacement_boundary  = -1;
-    unsigned int mean_displacement_component = 0;
-    std::string  mean_displacement_name;
-    bool         has_reference = false;
-    double       reference     = 0.;
-    double       tolerance     = 0.;
-    std::vector<int> reaction_boundaries; // checked against the mesh later
-
-    std::string  format   = "vtu";
-    unsigned int interval = 1;
-    /// Output > Compression: zlib level of the VTU data.
-    DataOutBase::VtkFlags::ZlibCompressionLevel compression =
-      DataOutBase::VtkFlags::best_speed;
-    /// Output > Verbosity.
-    enum class Verbosity
-    {
-      quiet,
-      normal,
-      verbose
-    };
-    Verbosity verbosity = Verbosity::normal;
-
-    /// Reads both subsections (from the top level of @p prm).
-    void
-    parse_parameters(ParameterHandler &prm, const unsigned int dim);
-  };
-
   /**
    * Everything a run reports about a converged state: the quantities of
    * interest of the "Postprocess" subsection (mean boundary displacement
@@ -99,9 +44,6 @@ namespace Signorini
   class Postprocessor
   {
   public:
-    static void
-    declare_parameters(ParameterHandler &prm);
-
     /// Checks the boundary ids of @p parameters against the mesh's.
     Postprocessor(const PostprocessParameters                               &parameters,
                   const DoFHandler<dim>                                     &dof_handler,

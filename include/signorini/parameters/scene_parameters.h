@@ -1,20 +1,21 @@
 #pragma once
 
-#include <signorini/driver/checkpoint.h>
-#include <signorini/scene/boundary_conditions.h>
+// Only the modules' parameter structs: no solver, contact model or output
+// class (doc/architecture.md, 'Headers').
 #include <signorini/contact/foundation.h>
 #include <signorini/contact/hertz.h>
-#include <signorini/contact/two_body.h>
-#include <signorini/solvers/interior_point.h>
-#include <signorini/solvers/ipopt_solver.h>
-#include <signorini/solvers/linear_solver.h>
-#include <signorini/material/interface.h>
-#include <signorini/scene/mesh.h>
+#include <signorini/contact/two_body_parameters.h>
+#include <signorini/driver/checkpoint.h>
+#include <signorini/output/postprocess_parameters.h>
 #include <signorini/parameters/selection.h>
-#include <signorini/solvers/newton.h>
-#include <signorini/output/postprocess.h>
-#include <signorini/scene/refinement.h>
-#include <signorini/solvers/penalty_continuation.h>
+#include <signorini/scene/boundary_conditions.h>
+#include <signorini/scene/mesh.h>
+#include <signorini/scene/refinement_parameters.h>
+#include <signorini/solvers/continuation_parameters.h>
+#include <signorini/solvers/interior_point_parameters.h>
+#include <signorini/solvers/ipopt_parameters.h>
+#include <signorini/solvers/linear_solver.h>
+#include <signorini/solvers/newton_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -26,6 +27,11 @@
 namespace Signorini
 {
   using namespace dealii;
+
+  namespace Material
+  {
+    class Interface;
+  }
 
   /**
    * Everything a scene file says, parsed into typed values before any mesh
@@ -111,7 +117,7 @@ namespace Signorini
       };
 
       Method                       method = Method::newton;
-      NewtonMinimizer::Parameters  newton;
+      NewtonParameters             newton;
       ContinuationParameters       penalty;
       IpoptParameters              ipopt;
       InteriorPointParameters      interior_point;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/scene/refinement_parameters.h>
+
 #include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/model.h>
 #include <signorini/types.h>
@@ -17,47 +19,6 @@
 namespace Signorini
 {
   using namespace dealii;
-
-  /**
-   * The "Mesh refinement" subsection: adaptive refinement cycles within a
-   * scene (solve, estimate, refine and coarsen, transfer the solution as
-   * the next initial guess, solve again), and an initial refinement of the
-   * potential contact zone only.
-   */
-  struct RefinementParameters
-  {
-    enum class Estimator
-    {
-      kelly,    // gradient jumps of the displacement across faces
-      contact,  // changes of the contact pressure along Gamma_C
-      combined  // both, each scaled by its largest value
-    };
-    enum class Strategy
-    {
-      fraction, // refine the cells holding this fraction of the total
-      number    // refine this fraction of the cells
-    };
-
-    unsigned int cycles           = 0;
-    Estimator    estimator        = Estimator::combined;
-    Strategy     strategy         = Strategy::fraction;
-    double       refine_fraction  = 0.3;
-    double       coarsen_fraction = 0.;
-    unsigned int max_level        = 12;
-    unsigned int band_refinements = 0;
-    double       band_width       = 0.;
-    double       band_gap         = -1.;
-    bool         uniform_zone     = true;
-    double       zone_depth       = 1.;
-
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    std::string
-    estimator_name() const;
-  };
 
   namespace Refinement
   {

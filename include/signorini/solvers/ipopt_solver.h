@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/solvers/ipopt_parameters.h>
+
 #include <signorini/archive.h>
 
 #include <signorini/contact/penalty.h>
@@ -22,28 +24,6 @@
 namespace Signorini
 {
   using namespace dealii;
-
-  /// The "Solver > Ipopt" subsection.
-  struct IpoptParameters
-  {
-    double       tolerance       = 1e-9;
-    unsigned int max_iterations  = 500;
-    std::string  mu_strategy     = "adaptive";
-    int          print_level     = 0;
-    int          file_print_level = 5;
-    std::string  options_file;
-    std::string  derivative_test = "none";
-    double       derivative_test_perturbation = 1e-3;
-    bool         warm_start      = true;
-    double       warm_start_mu   = 1e-6;
-    /// Ipopt's mumps_pivot_order (set from Linear solver > MUMPS ordering).
-    int          mumps_pivot_order = 4;
-
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
-  };
 
   /**
    * Constrained minimisation of the total potential energy with the

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/solvers/newton_parameters.h>
+
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/problem/objective.h>
 #include <signorini/types.h>
@@ -38,27 +40,8 @@ namespace Signorini
   class NewtonMinimizer
   {
   public:
-    struct Parameters
-    {
-      unsigned int max_iterations     = 50;
-      double       residual_tolerance = 1e-10;
-      double       absolute_tolerance = 1e-14;
-      double       energy_tolerance   = 1e-12;
-      double       armijo_c1          = 1e-4;
-      double       backtrack_factor   = 0.5;
-      unsigned int max_backtracks     = 30;
-      double       initial_shift      = 1e-6;
-      unsigned int max_shifts         = 8;
-      bool         inertia_test       = true;
-      bool         limit_trials       = true;
-      double       max_increment      = 0.1;
-      double       increment_tolerance = 1e-14;
+    using Parameters = NewtonParameters;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
 
     struct Statistics
     {
