@@ -1,3 +1,4 @@
+#include <signorini/contact/registry.h>
 #include <signorini/contact/rigid_foundation.h>
 #include <signorini/input_error.h>
 
@@ -277,5 +278,50 @@ namespace Signorini
 
     template class RigidFoundation<2>;
     template class RigidFoundation<3>;
+
+    namespace
+    {
+      template <int dim>
+      std::unique_ptr<Model<dim>>
+      create_rigid_foundation(const ModelParameters   &parameters,
+                              const types::boundary_id boundary_id,
+                              const DoFHandler<dim>   &dof_handler,
+                              const Mapping<dim>      &mapping)
+      {
+        const auto &foundation =
+          static_cast<const ParsedParameters<FoundationParameters> &>(parameters).value;
+        return std::make_unique<RigidFoundation<dim>>(Foundation<dim>::create(foundation),
+                                                      boundary_id,
+                                                      dof_handler,
+                                                      mapping);
+      }
+    } // namespace
+
+    ModelEntry
+    rigid_foundation_model()
+    {
+      ModelEntry entry;
+      entry.name = "rigid foundation";
+      entry.help = "rigid foundation: the boundary 'Contact boundary id' must stay above "
+                   "the surface of the Foundation subsection (node-wise constraints).";
+      entry.capabilities.node_wise_constraints = true;
+      entry.capabilities.bodies                = 1;
+      entry.declare_parameters                 = [](ParameterHandler &prm) {
+        prm.enter_subsection("Foundation");
+        Foundation<2>::declare_parameters(prm);
+        prm.leave_subsection();
+      };
+      entry.parse_parameters = [](ParameterHandler &prm, const unsigned int dim) {
+        FoundationParameters foundation;
+        prm.enter_subsection("Foundation");
+        foundation.parse_parameters(prm, dim, "Contact > Foundation");
+        prm.leave_subsection();
+        return std::make_shared<const ParsedParameters<FoundationParameters>>(
+          std::move(foundation));
+      };
+      entry.create_2d = create_rigid_foundation<2>;
+      entry.create_3d = create_rigid_foundation<3>;
+      return entry;
+    }
   } // namespace Contact
 } // namespace Signorini

@@ -1,3 +1,4 @@
+#include <signorini/contact/registry.h>
 #include <signorini/contact/two_body.h>
 #include <signorini/input_error.h>
 
@@ -706,5 +707,60 @@ namespace Signorini
 
     template class TwoBodyContact<2>;
     template class TwoBodyContact<3>;
+
+    namespace
+    {
+      template <int dim>
+      std::unique_ptr<Model<dim>>
+      create_two_body_contact(const ModelParameters   &parameters,
+                              const types::boundary_id boundary_id,
+                              const DoFHandler<dim>   &dof_handler,
+                              const Mapping<dim>      &mapping)
+      {
+        return std::make_unique<TwoBodyContact<dim>>(
+          static_cast<const ParsedParameters<TwoBodyParameters> &>(parameters).value,
+          boundary_id,
+          dof_handler,
+          mapping);
+      }
+    } // namespace
+
+    ModelEntry
+    two_body_model()
+    {
+      ModelEntry entry;
+      entry.name = "two bodies";
+      entry.help = "two bodies: the boundary 'Contact boundary id' of body 1 must stay out "
+                   "of body 2, whose surface is the Two bodies subsection's 'Target "
+                   "boundary id' (smooth indicator function, penalty; Method = "
+                   "newton-penalty).";
+      // The indicator constraint Phi = 0 has a zero gradient on the
+      // surface: no node-wise constraints for Ipopt or the interior point
+      // method.
+      entry.capabilities.node_wise_constraints = false;
+      entry.capabilities.bodies                = 2;
+      entry.declare_parameters                 = [](ParameterHandler &prm) {
+        prm.enter_subsection("Two bodies");
+        TwoBodyParameters::declare_parameters(prm);
+        prm.leave_subsection();
+      };
+      entry.parse_parameters = [](ParameterHandler &prm, const unsigned int) {
+        TwoBodyParameters parameters;
+        prm.enter_subsection("Two bodies");
+        parameters.parse_parameters(prm);
+        prm.leave_subsection();
+        return std::make_shared<const ParsedParameters<TwoBodyParameters>>(
+          std::move(parameters));
+      };
+      entry.boundary_ids = [](const ModelParameters &parameters) {
+        return std::vector<NamedBoundaryId>{
+          {"Two bodies > Target boundary id",
+           static_cast<const ParsedParameters<TwoBodyParameters> &>(parameters)
+             .value.target_boundary}};
+      };
+      entry.create_2d = create_two_body_contact<2>;
+      entry.create_3d = create_two_body_contact<3>;
+      return entry;
+    }
   } // namespace Contact
 } // namespace Signorini

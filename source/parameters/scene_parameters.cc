@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/contact/registry.h>
 #include <signorini/material/interface.h>
 #include <signorini/parameters/lists.h>
 #include <signorini/parameters/scene_parameters.h>
@@ -264,42 +265,25 @@ namespace Signorini
       prm.leave_subsection();
     }
 
-    const SelectionTable<Contact::Type> &
-    Contact::types()
-    {
-      static const SelectionTable<Type> table = {
-        {Type::none, "none"},
-        {Type::rigid_foundation, "rigid foundation"},
-        {Type::two_bodies, "two bodies"}};
-      return table;
-    }
-
     void
-    Contact::declare_parameters(ParameterHandler &prm)
+    ContactSection::declare_parameters(ParameterHandler &prm)
     {
+      const auto &models = Signorini::Contact::registered_models();
+      std::string names = "none", help = "none: no contact (no contact structures are built).";
+      for (const auto &model : models)
+        {
+          names += "|" + model.name;
+          help += " " + model.help;
+        }
       prm.enter_subsection("Contact");
-      prm.declare_entry("Type",
-                        "none",
-                        Patterns::Selection(selection_pattern(types())),
-                        "none: no contact (no contact structures are built). "
-                        "rigid foundation: the boundary 'Contact boundary id' "
-                        "must stay above the surface of the Foundation "
-                        "subsection (node-wise constraints). two bodies: the "
-                        "boundary 'Contact boundary id' of body 1 must stay "
-                        "out of body 2, whose surface is the Two bodies "
-                        "subsection's 'Target boundary id' (smooth indicator "
-                        "function, penalty; Method = newton-penalty).");
+      prm.declare_entry("Type", "none", Patterns::Selection(names), help);
       prm.declare_entry("Contact boundary id",
                         "0",
                         Patterns::Integer(0, 255),
                         "Gamma_2 (Gamma_C of body 1 for two bodies): the "
                         "boundary id of the potential contact boundary.");
-      prm.enter_subsection("Foundation");
-      Signorini::Contact::Foundation<2>::declare_parameters(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Two bodies");
-      Signorini::Contact::TwoBodyParameters::declare_parameters(prm);
-      prm.leave_subsection();
+      for (const auto &model : models)
+        model.declare_parameters(prm);
       prm.enter_subsection("Hertz reference");
       Signorini::Contact::HertzReference::declare_parameters(prm);
       prm.leave_subsection();
@@ -307,18 +291,13 @@ namespace Signorini
     }
 
     void
-    Contact::parse_parameters(ParameterHandler &prm)
+    ContactSection::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
-      // The foundation needs the dimension: parsed by Scene.
       prm.enter_subsection("Contact");
-      type = selection_value(prm.get("Type"), types());
-      boundary_id = prm.get_integer("Contact boundary id");
-      if (type == Type::two_bodies)
-        {
-          prm.enter_subsection("Two bodies");
-          two_bodies.parse_parameters(prm);
-          prm.leave_subsection();
-        }
+      type             = prm.get("Type");
+      model            = Signorini::Contact::find_model(type);
+      model_parameters = model ? model->parse_parameters(prm, dim) : nullptr;
+      boundary_id      = prm.get_integer("Contact boundary id");
       prm.enter_subsection("Hertz reference");
       hertz.parse_parameters(prm);
       prm.leave_subsection();
@@ -350,7 +329,7 @@ namespace Signorini
 
       LoadStepping::declare_parameters(prm);
       Solver::declare_parameters(prm);
-      Contact::declare_parameters(prm);
+      ContactSection::declare_parameters(prm);
       PostprocessParameters::declare_parameters(prm);
       CheckpointParameters::declare_parameters(prm);
     }
@@ -405,22 +384,14 @@ namespace Signorini
       boundary_conditions.parse_parameters(prm);
       prm.leave_subsection();
 
-      contact.parse_parameters(prm);
-      if (contact.type == Contact::Type::rigid_foundation)
-        {
-          prm.enter_subsection("Contact");
-          prm.enter_subsection("Foundation");
-          contact.foundation.parse_parameters(prm, dim, "Contact > Foundation");
-          prm.leave_subsection();
-          prm.leave_subsection();
-        }
-      if (contact.type == Contact::Type::two_bodies && bodies.size() < 2)
+      contact.parse_parameters(prm, dim);
+      if (contact.active() && bodies.size() < contact.model->capabilities.bodies)
         throw InputError("Contact > Type",
-                         "two bodies needs Body 2 > Active = true");
+                         contact.type + " needs Body 2 > Active = true");
       auto &hertz = contact.hertz;
       const std::string hertz_load = std::string("Contact > Hertz reference > ") +
                                      (hertz.point_contact() ? "Point load" : "Line load");
-      if (hertz.active() && contact.type == Contact::Type::none)
+      if (hertz.active() && !contact.active())
         throw InputError(hertz_load,
                          "a Hertz reference needs contact (Contact > Type)");
       if (hertz.point_contact() && dim != 3)
@@ -435,8 +406,7 @@ namespace Signorini
         {
           // 1/E* = sum over the bodies in contact of (1 - nu^2)/E.
           double compliance = 0.;
-          const unsigned int n =
-            contact.type == Contact::Type::two_bodies ? 2u : 1u;
+          const unsigned int n = contact.model->capabilities.bodies;
           for (unsigned int b = 0; b < n; ++b)
             {
               const auto [E, nu] =

@@ -1,3 +1,4 @@
+#include <signorini/contact/registry.h>
 #include <signorini/input_error.h>
 #include <signorini/output/json.h>
 #include <signorini/solvers/interior_point_step.h>
@@ -257,14 +258,14 @@ namespace Signorini
   void
   check_solver_compatibility(const Parameters::Scene &p, const unsigned int n_ranks)
   {
-    using Method      = Parameters::Solver::Method;
-    const Method m    = p.solver.method;
-    const bool   contact = p.contact.type != Parameters::Contact::Type::none;
-    const std::string method = Parameters::selection_name(m, Parameters::Solver::methods());
+    // Asked of the contact model's capabilities only (contact/registry.h).
+    using Method         = Parameters::Solver::Method;
+    const Method      m       = p.solver.method;
+    const bool        contact = p.contact.active();
+    const std::string method  = Parameters::selection_name(m, Parameters::Solver::methods());
     if (m == Method::newton && contact)
       throw InputError("Solver > Method",
-                       "the scene declares contact (Contact > Type = " +
-                         Parameters::selection_name(p.contact.type, Parameters::Contact::types()) +
+                       "the scene declares contact (Contact > Type = " + p.contact.type +
                          "), which Method = newton cannot handle: use "
                          "newton-penalty");
     if (m == Method::newton_penalty && !contact)
@@ -277,16 +278,20 @@ namespace Signorini
                        "J = 1 constraints need Solver > Method = ipopt or "
                        "interior-point, not " +
                          method);
-    if (m == Method::interior_point &&
-        p.contact.type != Parameters::Contact::Type::rigid_foundation &&
-        !(incompressible && !contact))
-      throw InputError("Solver > Method",
-                       "interior-point handles the node-wise constraints of "
-                       "Contact > Type = rigid foundation, and this scene has "
-                       "Contact > Type = " +
-                         Parameters::selection_name(p.contact.type,
-                                                    Parameters::Contact::types()) +
-                         ": use " + (contact ? "newton-penalty or ipopt" : "newton"));
+    const bool constraints = contact && p.contact.model->capabilities.node_wise_constraints;
+    if (m == Method::interior_point && !constraints && !(incompressible && !contact))
+      {
+        std::string with_constraints;
+        for (const auto &model : Contact::registered_models())
+          if (model.capabilities.node_wise_constraints)
+            with_constraints += (with_constraints.empty() ? "" : " or ") + model.name;
+        throw InputError("Solver > Method",
+                         "interior-point handles the node-wise constraints of "
+                         "Contact > Type = " +
+                           with_constraints + ", and this scene has Contact > Type = " +
+                           p.contact.type + ": use " +
+                           (contact ? "newton-penalty or ipopt" : "newton"));
+      }
     if (m == Method::ipopt && n_ranks > 1)
       throw InputError("Solver > Method",
                        "ipopt runs on one MPI rank, and this run has " +
@@ -316,7 +321,8 @@ namespace Signorini
           // A model without constraints (the indicator function: its
           // constraint Phi = 0 has a zero gradient on the surface) is
           // enforced by penalty stages, each minimised by Ipopt.
-          if (problem.contact && !problem.contact->has_constraints())
+          if (parameters.contact.active() &&
+              !parameters.contact.model->capabilities.node_wise_constraints)
             return std::make_unique<PenaltyStep<dim>>(parameters, scene,
                                                       problem, timer, progress,
                                                       true);

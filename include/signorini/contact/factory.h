@@ -13,16 +13,15 @@ namespace Signorini
   namespace Contact
   {
     /**
-     * The contact model that @p parameters declare (Contact > Type), on the
-     * DoFs of @p dof_handler; null for Type = none. InputError if a
-     * boundary id it names is not in the mesh. The one place that maps
-     * the type to a class: a new model adds an enum value in
-     * Parameters::Contact and a case here.
+     * The contact model that @p parameters declare (Contact > Type, a
+     * registered model: contact/registry.h), on the DoFs of
+     * @p dof_handler; null for Type = none. InputError if a boundary id
+     * it names is not in the mesh.
      */
     template <int dim>
     std::unique_ptr<Model<dim>>
-    create_model(const Parameters::Contact &parameters,
-                 const DoFHandler<dim>     &dof_handler,
-                 const Mapping<dim>        &mapping);
+    create_model(const Parameters::ContactSection &parameters,
+                 const DoFHandler<dim>            &dof_handler,
+                 const Mapping<dim>               &mapping);
   } // namespace Contact
 } // namespace Signorini

@@ -2,9 +2,7 @@
 
 // Only the modules' parameter structs: no solver, contact model or output
 // class (doc/architecture.md, 'Headers').
-#include <signorini/contact/foundation.h>
 #include <signorini/contact/hertz.h>
-#include <signorini/contact/two_body_parameters.h>
 #include <signorini/driver/checkpoint.h>
 #include <signorini/output/postprocess_parameters.h>
 #include <signorini/parameters/selection.h>
@@ -32,6 +30,11 @@ namespace Signorini
   {
     class Interface;
   }
+  namespace Contact
+  {
+    struct ModelEntry;
+    struct ModelParameters;
+  } // namespace Contact
 
   /**
    * Everything a scene file says, parsed into typed values before any mesh
@@ -133,30 +136,31 @@ namespace Signorini
       parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
     };
 
-    /// "Contact".
-    struct Contact
+    /// "Contact": the registered model that Type names (contact/registry.h)
+    /// with its parsed subsections, the contact boundary and the Hertz
+    /// reference.
+    struct ContactSection
     {
-      enum class Type
+      /// Type: "none" or a registered model's name.
+      std::string                                        type  = "none";
+      const Signorini::Contact::ModelEntry              *model = nullptr; // none: null
+      std::shared_ptr<const Signorini::Contact::ModelParameters> model_parameters;
+      types::boundary_id                                 boundary_id = 0;
+      Signorini::Contact::HertzReference                 hertz;
+
+      /// Whether the scene declares contact.
+      bool
+      active() const
       {
-        none,
-        rigid_foundation,
-        two_bodies
-      };
-
-      Type                                     type = Type::none;
-      types::boundary_id                       boundary_id = 0;
-      Signorini::Contact::FoundationParameters foundation;
-      Signorini::Contact::TwoBodyParameters    two_bodies;
-      Signorini::Contact::HertzReference       hertz;
-
-      /// The names of the types in the parameter file.
-      static const SelectionTable<Type> &
-      types();
+        return model != nullptr;
+      }
 
       static void
       declare_parameters(ParameterHandler &prm);
+      /// Reads Type, the boundary id, the model's own subsections (for a
+      /// scene of dimension @p dim) and the Hertz reference.
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
     };
 
     /**
@@ -174,7 +178,7 @@ namespace Signorini
       BoundaryConditionParameters    boundary_conditions;
       LoadStepping                   load_stepping;
       Solver                         solver;
-      Contact                        contact;
+      ContactSection                 contact;
       PostprocessParameters          postprocess;
       CheckpointParameters           checkpoint;
 
