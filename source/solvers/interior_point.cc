@@ -37,6 +37,18 @@ namespace Signorini
                       "as converged if its residuals are all at most this "
                       "(like Ipopt's acceptable_tol), else the iteration "
                       "goes on; 0: never.");
+    prm.declare_entry("Maximum increment",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "No step moves a DoF by more than this fraction of the "
+                      "scene's size (bounding-box diameter); 0: no limit.");
+    prm.declare_entry("Increment tolerance",
+                      "1e-14",
+                      Patterns::Double(0.),
+                      "Converged also when the step moves no DoF by more "
+                      "than this fraction of the scene's size while the "
+                      "constraints and complementarity are met: the dual "
+                      "residual is then at its round-off level; 0: never.");
     prm.declare_entry("Maximum iterations",
                       "100",
                       Patterns::Integer(1),
@@ -142,6 +154,8 @@ namespace Signorini
     armijo_c1              = prm.get_double("Armijo parameter");
     max_backtracks         = prm.get_integer("Maximum backtracks");
     initial_regularization = prm.get_double("Initial regularization");
+    max_increment          = prm.get_double("Maximum increment");
+    increment_tolerance    = prm.get_double("Increment tolerance");
     max_regularizations    = prm.get_integer("Maximum regularizations");
     incompressibility_weight    = prm.get_double("Incompressibility weight");
     incompressibility_tolerance = prm.get_double("Incompressibility tolerance");

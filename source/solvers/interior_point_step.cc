@@ -54,9 +54,9 @@ namespace Signorini
                         material->second->small_strain_lame().first / volume.back());
           y.push_back(0.);
         }
-    minimizer.set_step_limits(this->parameters.solver.newton.max_increment *
+    minimizer.set_step_limits(this->parameters.solver.interior_point.max_increment *
                                 this->scene.size,
-                              this->parameters.solver.newton.increment_tolerance *
+                              this->parameters.solver.interior_point.increment_tolerance *
                                 this->scene.size);
   }
 

@@ -84,6 +84,12 @@ namespace Signorini
                       "500",
                       Patterns::Integer(1),
                       "Ipopt 'max_iter' per load step.");
+    prm.declare_entry("Maximum increment",
+                      "0.1",
+                      Patterns::Double(0.),
+                      "Penalty stages (two bodies): no Ipopt step moves a "
+                      "DoF by more than this fraction of the scene's size "
+                      "(bounding-box diameter); 0: no limit.");
     prm.declare_entry("Mu strategy",
                       "adaptive",
                       Patterns::Selection("adaptive|monotone"),
@@ -136,6 +142,7 @@ namespace Signorini
   {
     tolerance        = prm.get_double("Tolerance");
     max_iterations   = prm.get_integer("Maximum iterations");
+    max_increment    = prm.get_double("Maximum increment");
     mu_strategy      = prm.get("Mu strategy");
     print_level      = prm.get_integer("Print level");
     file_print_level = prm.get_integer("File print level");

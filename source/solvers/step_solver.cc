@@ -209,7 +209,7 @@ namespace Signorini
                                                     progress,
                                                     timer);
     ipopt->setup(scene.homogeneous_constraints, scene.hessian);
-    ipopt->set_step_limit(parameters.solver.newton.max_increment * scene.size);
+    ipopt->set_step_limit(parameters.solver.ipopt.max_increment * scene.size);
     return ipopt;
   }
 

@@ -25,6 +25,11 @@ namespace Signorini
     double       armijo_c1              = 1e-4;
     unsigned int max_backtracks         = 30;
     double       initial_regularization = 1e-8;
+    /// No DoF moves by more than this fraction of the scene's size in one
+    /// step; a step below 'Increment tolerance' (the same fraction) with
+    /// the constraints met ends the iteration.
+    double       max_increment          = 0.1;
+    double       increment_tolerance    = 1e-14;
     unsigned int max_regularizations    = 12;
     // Incompressible bodies (augmented Lagrangian, InteriorPointStep).
     double       incompressibility_weight    = 100.;

@@ -24,6 +24,9 @@ namespace Signorini
     double       derivative_test_perturbation = 1e-3;
     bool         warm_start      = true;
     double       warm_start_mu   = 1e-6;
+    /// Penalty stages minimised by Ipopt: no step moves a DoF by more than
+    /// this fraction of the scene's size (0: no limit).
+    double       max_increment   = 0.1;
     /// Ipopt's mumps_pivot_order (set from Linear solver > MUMPS ordering).
     int          mumps_pivot_order = 4;
 
