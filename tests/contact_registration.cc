@@ -52,7 +52,7 @@ namespace
   {
     Contact::FoundationParameters plane;
     plane.shape  = Contact::FoundationParameters::Shape::plane;
-    plane.height = static_cast<const Contact::ParsedParameters<double> &>(parameters).value;
+    plane.height = Contact::parsed<double>(parameters);
     plane.slope.assign(dim - 1, 0.);
     plane.context = "Contact > Test plane";
     return std::make_unique<TestPlane<dim>>(Contact::Foundation<dim>::create(plane),

@@ -279,24 +279,6 @@ namespace Signorini
     template class RigidFoundation<2>;
     template class RigidFoundation<3>;
 
-    namespace
-    {
-      template <int dim>
-      std::unique_ptr<Model<dim>>
-      create_rigid_foundation(const ModelParameters   &parameters,
-                              const types::boundary_id boundary_id,
-                              const DoFHandler<dim>   &dof_handler,
-                              const Mapping<dim>      &mapping)
-      {
-        const auto &foundation =
-          static_cast<const ParsedParameters<FoundationParameters> &>(parameters).value;
-        return std::make_unique<RigidFoundation<dim>>(Foundation<dim>::create(foundation),
-                                                      boundary_id,
-                                                      dof_handler,
-                                                      mapping);
-      }
-    } // namespace
-
     ModelEntry
     rigid_foundation_model()
     {
@@ -319,8 +301,17 @@ namespace Signorini
         return std::make_shared<const ParsedParameters<FoundationParameters>>(
           std::move(foundation));
       };
-      entry.create_2d = create_rigid_foundation<2>;
-      entry.create_3d = create_rigid_foundation<3>;
+      entry.set_create([](const ModelParameters   &parameters,
+                          const types::boundary_id boundary_id,
+                          const auto              &dof_handler,
+                          const auto              &mapping) {
+        constexpr int dim = std::decay_t<decltype(dof_handler)>::dimension;
+        return std::unique_ptr<Model<dim>>(std::make_unique<RigidFoundation<dim>>(
+          Foundation<dim>::create(parsed<FoundationParameters>(parameters)),
+          boundary_id,
+          dof_handler,
+          mapping));
+      });
       return entry;
     }
   } // namespace Contact

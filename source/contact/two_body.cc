@@ -708,23 +708,6 @@ namespace Signorini
     template class TwoBodyContact<2>;
     template class TwoBodyContact<3>;
 
-    namespace
-    {
-      template <int dim>
-      std::unique_ptr<Model<dim>>
-      create_two_body_contact(const ModelParameters   &parameters,
-                              const types::boundary_id boundary_id,
-                              const DoFHandler<dim>   &dof_handler,
-                              const Mapping<dim>      &mapping)
-      {
-        return std::make_unique<TwoBodyContact<dim>>(
-          static_cast<const ParsedParameters<TwoBodyParameters> &>(parameters).value,
-          boundary_id,
-          dof_handler,
-          mapping);
-      }
-    } // namespace
-
     ModelEntry
     two_body_model()
     {
@@ -755,11 +738,16 @@ namespace Signorini
       entry.boundary_ids = [](const ModelParameters &parameters) {
         return std::vector<NamedBoundaryId>{
           {"Two bodies > Target boundary id",
-           static_cast<const ParsedParameters<TwoBodyParameters> &>(parameters)
-             .value.target_boundary}};
+           parsed<TwoBodyParameters>(parameters).target_boundary}};
       };
-      entry.create_2d = create_two_body_contact<2>;
-      entry.create_3d = create_two_body_contact<3>;
+      entry.set_create([](const ModelParameters   &parameters,
+                          const types::boundary_id boundary_id,
+                          const auto              &dof_handler,
+                          const auto              &mapping) {
+        constexpr int dim = std::decay_t<decltype(dof_handler)>::dimension;
+        return std::unique_ptr<Model<dim>>(std::make_unique<TwoBodyContact<dim>>(
+          parsed<TwoBodyParameters>(parameters), boundary_id, dof_handler, mapping));
+      });
       return entry;
     }
   } // namespace Contact

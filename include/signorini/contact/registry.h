@@ -61,6 +61,14 @@ namespace Signorini
       T value;
     };
 
+    /// The value of @p parameters, which hold a @p T (ParsedParameters<T>).
+    template <typename T>
+    const T &
+    parsed(const ModelParameters &parameters)
+    {
+      return static_cast<const ParsedParameters<T> &>(parameters).value;
+    }
+
     /// A boundary id that a model's parameters name: its key (under
     /// "Contact > ") and the id, checked against the mesh.
     using NamedBoundaryId = std::pair<std::string, types::boundary_id>;
@@ -94,6 +102,17 @@ namespace Signorini
       /// Build the model on the contact boundary @p boundary_id.
       Creator<2> create_2d;
       Creator<3> create_3d;
+
+      /// Set both create functions from one generic callable
+      /// (parameters, boundary id, DoFHandler<dim>, Mapping<dim>) ->
+      /// std::unique_ptr<Model<dim>>.
+      template <typename Create>
+      void
+      set_create(const Create &create)
+      {
+        create_2d = create;
+        create_3d = create;
+      }
     };
 
     /**
