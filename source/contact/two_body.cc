@@ -200,6 +200,83 @@ namespace Signorini
                          "must be > 0, got " + prm.get("Apex depth"));
     }
 
+    namespace
+    {
+      /// An edge of a body 2 face that no other face shares as a vertex
+      /// pair: the face, the edge's first vertex and its ends (reference
+      /// configuration).
+      template <int dim>
+      struct SingleEdge
+      {
+        unsigned int face, vertex;
+        Point<dim>   a, b;
+      };
+
+      /// Whether p lies on the segment [a, b] (to round-off of its length).
+      template <int dim>
+      bool
+      on_segment(const Point<dim> &p, const Point<dim> &a, const Point<dim> &b)
+      {
+        const Tensor<1, dim> ab = b - a;
+        const double         l2 = ab.norm_square();
+        const double         s  = ((p - a) * ab) / l2;
+        if (s < -1e-10 || s > 1. + 1e-10)
+          return false;
+        return (p - (a + s * ab)).norm_square() <= 1e-20 * l2;
+      }
+
+      /// Whether the edge [p, q] is half of the edge [a, b] across a
+      /// change of refinement level on a curved surface: it shares an end
+      /// with it and its other end is the hanging vertex, which the
+      /// manifold put on the surface, off the chord [a, b] by the arc's
+      /// sag (3% of |ab| for a face of a quarter of the radius), near its
+      /// midpoint.
+      template <int dim>
+      bool
+      half_of(const Point<dim> &p,
+              const Point<dim> &q,
+              const Point<dim> &a,
+              const Point<dim> &b)
+      {
+        const double     l2   = (b - a).norm_square();
+        const Point<dim> mid  = 0.5 * (a + b);
+        const auto       same = [l2](const Point<dim> &x, const Point<dim> &y) {
+          return (x - y).norm_square() <= 1e-20 * l2;
+        };
+        const auto near_mid = [&](const Point<dim> &x) {
+          return (x - mid).norm_square() <= 0.0625 * l2;
+        };
+        return ((same(p, a) || same(p, b)) && near_mid(q)) ||
+               ((same(q, a) || same(q, b)) && near_mid(p));
+      }
+
+      /// For each edge of @p single that another face's edge of @p single
+      /// continues (it lies along it, or is half of it across a change of
+      /// refinement level): the indices of the edge and of the first such
+      /// other edge.
+      template <int dim>
+      std::vector<std::pair<unsigned int, unsigned int>>
+      continued_edges(const std::vector<SingleEdge<dim>> &single)
+      {
+        std::vector<std::pair<unsigned int, unsigned int>> continued;
+        for (unsigned int i = 0; i < single.size(); ++i)
+          for (unsigned int j = 0; j < single.size(); ++j)
+            {
+              const auto &e = single[i];
+              const auto &o = single[j];
+              if (o.face != e.face &&
+                  ((on_segment(e.a, o.a, o.b) && on_segment(e.b, o.a, o.b)) ||
+                   (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b)) ||
+                   half_of(e.a, e.b, o.a, o.b) || half_of(o.a, o.b, e.a, e.b)))
+                {
+                  continued.emplace_back(i, j);
+                  break;
+                }
+            }
+        return continued;
+      }
+    } // namespace
+
     template <int dim>
     TwoBodyContact<dim>::TwoBodyContact(const TwoBodyParameters &parameters,
                                         const types::boundary_id contact_boundary,
@@ -219,13 +296,29 @@ namespace Signorini
                                const AffineConstraints<double> &constraints)
     {
       const MPI_Comm comm = dof_handler.get_communicator();
-      const auto    &fe   = dof_handler.get_fe();
       relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
       boundary.setup({contact_boundary}, hanging_constraints);
       target.setup({prm.target_boundary}, hanging_constraints);
       this->nodal_forces.assign((boundary.nodes().size() + target.nodes().size()) * dim,
                                 0.);
 
+      collect_points();
+      gather_target_faces();
+      mark_face_ends();
+      check_boundaries();
+      measure_faces();
+      find_extra_rows(constraints);
+
+      stats                = PairStatistics();
+      stats.target_faces   = faces2.size();
+      stats.points         = Utilities::MPI::sum(static_cast<unsigned int>(points.size()), comm);
+      pattern.clear();
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::collect_points()
+    {
       // Body 1's nodes as evaluation points (always: they carry the
       // output), and the Gauss points of the integral form.
       node_points.clear();
@@ -242,53 +335,48 @@ namespace Signorini
           p.weight = n.weight;
           node_points.push_back(p);
         }
-      std::set<types::material_id> body1, body2;
-      if (prm.integral)
+      if (!prm.integral)
         {
-          points.clear();
-          FEFaceValues<dim> fe_face(mapping, fe, QGauss<dim - 1>(prm.gauss_points),
-                                    update_values | update_JxW_values |
-                                      update_quadrature_points);
-          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned())
-              for (const auto f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    cell->face(f)->boundary_id() == contact_boundary)
-                  {
-                    fe_face.reinit(cell, f);
-                    cell->get_dof_indices(dofs);
-                    for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
-                      {
-                        Point1 p;
-                        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                          if (fe.has_support_on_face(i, f))
-                            {
-                              p.dofs.push_back(dofs[i]);
-                              p.components.push_back(
-                                fe.system_to_component_index(i).first);
-                              p.shape.push_back(fe_face.shape_value(i, q));
-                            }
-                        p.X      = fe_face.quadrature_point(q);
-                        p.weight = fe_face.JxW(q);
-                        points.push_back(p);
-                      }
-                  }
+          points = node_points;
+          return;
         }
-      else
-        points = node_points;
+      const auto &fe = dof_handler.get_fe();
+      points.clear();
+      FEFaceValues<dim> fe_face(mapping, fe, QGauss<dim - 1>(prm.gauss_points),
+                                update_values | update_JxW_values |
+                                  update_quadrature_points);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == contact_boundary)
               {
-                if (cell->face(f)->boundary_id() == contact_boundary)
-                  body1.insert(cell->material_id());
-                if (cell->face(f)->boundary_id() == prm.target_boundary)
-                  body2.insert(cell->material_id());
+                fe_face.reinit(cell, f);
+                cell->get_dof_indices(dofs);
+                for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+                  {
+                    Point1 p;
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      if (fe.has_support_on_face(i, f))
+                        {
+                          p.dofs.push_back(dofs[i]);
+                          p.components.push_back(
+                            fe.system_to_component_index(i).first);
+                          p.shape.push_back(fe_face.shape_value(i, q));
+                        }
+                    p.X      = fe_face.quadrature_point(q);
+                    p.weight = fe_face.JxW(q);
+                    points.push_back(p);
+                  }
               }
+    }
 
-      // Body 2's faces: this rank's, then every rank's.
+    template <int dim>
+    void
+    TwoBodyContact<dim>::gather_target_faces()
+    {
+      const MPI_Comm     comm = dof_handler.get_communicator();
       std::vector<Face2> owned_faces;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -330,125 +418,105 @@ namespace Signorini
             }
           faces2.insert(faces2.end(), all_faces[r].begin(), all_faces[r].end());
         }
+    }
 
+    template <int dim>
+    void
+    TwoBodyContact<dim>::mark_face_ends()
+    {
       // Free ends: 2D vertices of one face, 3D vertices of edges of one
       // face (vertices are identified by their first DoF).
-      {
-        std::map<std::vector<types::global_dof_index>, unsigned int> count;
-        auto key = [&](const Face2 &f, const unsigned int v) {
-          std::vector<types::global_dof_index> k = {f.dofs[v * dim]};
-          if (dim == 3)
-            {
-              k.push_back(f.dofs[((v + 1) % n_face_vertices) * dim]);
-              std::sort(k.begin(), k.end());
-            }
-          return k;
-        };
-        // The smallest face at each end (vertex in 2D, edge in 3D).
-        std::map<std::vector<types::global_dof_index>, double> smallest;
-        for (const auto &f : faces2)
-          for (unsigned int v = 0; v < n_face_vertices; ++v)
-            {
-              const auto k = key(f, v);
-              ++count[k];
-              const auto [it, first] = smallest.try_emplace(k, f.h);
-              if (!first)
-                it->second = std::min(it->second, f.h);
-            }
-        // In 3D an edge of one face is not a free end if it lies along
-        // edges of other faces: where the refinement level changes, a
-        // coarse face's edge holds two fine faces' edges (with a hanging
-        // vertex between them), none of them shared as a vertex pair, yet
-        // the surface goes on across them. Such edges overlap another
-        // face's edge in the reference configuration.
-        std::set<std::pair<unsigned int, unsigned int>> continued;
+      std::map<std::vector<types::global_dof_index>, unsigned int> count;
+      auto key = [&](const Face2 &f, const unsigned int v) {
+        std::vector<types::global_dof_index> k = {f.dofs[v * dim]};
         if (dim == 3)
           {
-            struct Edge
-            {
-              unsigned int face, vertex;
-              Point<dim>   a, b;
-            };
-            std::vector<Edge> single;
-            for (unsigned int i = 0; i < faces2.size(); ++i)
-              for (unsigned int v = 0; v < n_face_vertices; ++v)
-                if (count[key(faces2[i], v)] == 1)
-                  {
-                    Edge e{i, v, Point<dim>(), Point<dim>()};
-                    const unsigned int w = (v + 1) % n_face_vertices;
-                    for (unsigned int c = 0; c < dim; ++c)
-                      {
-                        e.a[c] = faces2[i].X[v * dim + c];
-                        e.b[c] = faces2[i].X[w * dim + c];
-                      }
-                    single.push_back(e);
-                  }
-            // Whether p lies on the segment [a, b] (to round-off of its length).
-            const auto on_segment = [](const Point<dim> &p, const Point<dim> &a,
-                                       const Point<dim> &b) {
-              const Tensor<1, dim> ab = b - a;
-              const double         l2 = ab.norm_square();
-              const double         s  = ((p - a) * ab) / l2;
-              if (s < -1e-10 || s > 1. + 1e-10)
-                return false;
-              return (p - (a + s * ab)).norm_square() <= 1e-20 * l2;
-            };
-            // Whether the edge [p, q] is half of the edge [a, b] across a
-            // change of refinement level on a curved surface: it shares an
-            // end with it and its other end is the hanging vertex, which
-            // the manifold put on the surface, off the chord [a, b] by the
-            // arc's sag (3% of |ab| for a face of a quarter of the radius),
-            // near its midpoint.
-            const auto half_of = [](const Point<dim> &p, const Point<dim> &q,
-                                    const Point<dim> &a, const Point<dim> &b) {
-              const double     l2   = (b - a).norm_square();
-              const Point<dim> mid  = 0.5 * (a + b);
-              const auto       same = [l2](const Point<dim> &x, const Point<dim> &y) {
-                return (x - y).norm_square() <= 1e-20 * l2;
-              };
-              const auto near_mid = [&](const Point<dim> &x) {
-                return (x - mid).norm_square() <= 0.0625 * l2;
-              };
-              return ((same(p, a) || same(p, b)) && near_mid(q)) ||
-                     ((same(q, a) || same(q, b)) && near_mid(p));
-            };
-            for (const auto &e : single)
-              for (const auto &o : single)
-                if (o.face != e.face &&
-                    ((on_segment(e.a, o.a, o.b) && on_segment(e.b, o.a, o.b)) ||
-                     (on_segment(o.a, e.a, e.b) && on_segment(o.b, e.a, e.b)) ||
-                     half_of(e.a, e.b, o.a, o.b) || half_of(o.a, o.b, e.a, e.b)))
-                  {
-                    continued.insert({e.face, e.vertex});
-                    // Across a change of refinement level the neighbour
-                    // is the other face along the edge.
-                    const auto k = key(faces2[e.face], e.vertex);
-                    smallest[k] = std::min(smallest[k], faces2[o.face].h);
-                    break;
-                  }
+            k.push_back(f.dofs[((v + 1) % n_face_vertices) * dim]);
+            std::sort(k.begin(), k.end());
           }
-        for (unsigned int i = 0; i < faces2.size(); ++i)
+        return k;
+      };
+      // The smallest face at each end (vertex in 2D, edge in 3D).
+      std::map<std::vector<types::global_dof_index>, double> smallest;
+      for (const auto &f : faces2)
+        for (unsigned int v = 0; v < n_face_vertices; ++v)
           {
-            auto &f = faces2[i];
-            f.end_stretch.fill(-1.);
-            f.free_end.fill(false);
-            // The partition shape's ramp at a shared end spans s times the
-            // smaller face's size on either side, so that the ramps of
-            // faces of different sizes still sum to 1.
-            for (unsigned int v = 0; v < n_face_vertices; ++v)
-              f.ramp[v] = prm.stretch * std::min(1., smallest[key(f, v)] / f.h);
-            for (unsigned int v = 0; v < n_face_vertices; ++v)
-              if (count[key(f, v)] == 1 && continued.count({i, v}) == 0)
-                {
-                  f.free_end[v]    = true;
-                  f.end_stretch[v] = prm.end_stretch;
-                  if (dim == 3)
-                    f.end_stretch[(v + 1) % n_face_vertices] = prm.end_stretch;
-                }
+            const auto k = key(f, v);
+            ++count[k];
+            const auto [it, first] = smallest.try_emplace(k, f.h);
+            if (!first)
+              it->second = std::min(it->second, f.h);
           }
-      }
+      // In 3D an edge of one face is not a free end if it lies along
+      // edges of other faces: where the refinement level changes, a
+      // coarse face's edge holds two fine faces' edges (with a hanging
+      // vertex between them), none of them shared as a vertex pair, yet
+      // the surface goes on across them. Such edges overlap another
+      // face's edge in the reference configuration.
+      std::set<std::pair<unsigned int, unsigned int>> continued;
+      if (dim == 3)
+        {
+          std::vector<SingleEdge<dim>> single;
+          for (unsigned int i = 0; i < faces2.size(); ++i)
+            for (unsigned int v = 0; v < n_face_vertices; ++v)
+              if (count[key(faces2[i], v)] == 1)
+                {
+                  SingleEdge<dim>    e{i, v, Point<dim>(), Point<dim>()};
+                  const unsigned int w = (v + 1) % n_face_vertices;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    {
+                      e.a[c] = faces2[i].X[v * dim + c];
+                      e.b[c] = faces2[i].X[w * dim + c];
+                    }
+                  single.push_back(e);
+                }
+          for (const auto &[i, j] : continued_edges(single))
+            {
+              const auto &e = single[i];
+              continued.insert({e.face, e.vertex});
+              // Across a change of refinement level the neighbour is the
+              // other face along the edge.
+              const auto k = key(faces2[e.face], e.vertex);
+              smallest[k]  = std::min(smallest[k], faces2[single[j].face].h);
+            }
+        }
+      for (unsigned int i = 0; i < faces2.size(); ++i)
+        {
+          auto &f = faces2[i];
+          f.end_stretch.fill(-1.);
+          f.free_end.fill(false);
+          // The partition shape's ramp at a shared end spans s times the
+          // smaller face's size on either side, so that the ramps of
+          // faces of different sizes still sum to 1.
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            f.ramp[v] = prm.stretch * std::min(1., smallest[key(f, v)] / f.h);
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            if (count[key(f, v)] == 1 && continued.count({i, v}) == 0)
+              {
+                f.free_end[v]    = true;
+                f.end_stretch[v] = prm.end_stretch;
+                if (dim == 3)
+                  f.end_stretch[(v + 1) % n_face_vertices] = prm.end_stretch;
+              }
+        }
+    }
 
-      // Check the input.
+    template <int dim>
+    void
+    TwoBodyContact<dim>::check_boundaries() const
+    {
+      const MPI_Comm               comm = dof_handler.get_communicator();
+      std::set<types::material_id> body1, body2;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                if (cell->face(f)->boundary_id() == contact_boundary)
+                  body1.insert(cell->material_id());
+                if (cell->face(f)->boundary_id() == prm.target_boundary)
+                  body2.insert(cell->material_id());
+              }
       std::vector<unsigned int> ids1(body1.begin(), body1.end()),
         ids2(body2.begin(), body2.end());
       std::set<unsigned int> all1, all2;
@@ -473,7 +541,12 @@ namespace Signorini
                              std::to_string(id) +
                              ": the contact boundary and the target surface "
                              "must belong to different bodies");
+    }
 
+    template <int dim>
+    void
+    TwoBodyContact<dim>::measure_faces()
+    {
       min_face_size  = std::numeric_limits<double>::max();
       mean_face_size = 0.;
       min_layer      = std::numeric_limits<double>::max();
@@ -489,9 +562,15 @@ namespace Signorini
                            n_face_vertices;
           min_layer = std::min(min_layer, prm.apex_depth * offset.norm());
         }
+    }
 
+    template <int dim>
+    void
+    TwoBodyContact<dim>::find_extra_rows(const AffineConstraints<double> &constraints)
+    {
       // Rows this rank's pairs may write to: body 2's face DoFs and the
       // DoFs their constraints refer to.
+      const MPI_Comm                       comm = dof_handler.get_communicator();
       std::vector<types::global_dof_index> rows;
       for (unsigned int i = first_owned_face; i < first_owned_face + n_owned_faces; ++i)
         for (const auto dof : faces2[i].dofs)
@@ -510,11 +589,6 @@ namespace Signorini
           extra_rows.add_indices(sorted.begin(), sorted.end());
         }
       extra_rows.compress();
-
-      stats                = PairStatistics();
-      stats.target_faces   = faces2.size();
-      stats.points         = Utilities::MPI::sum(static_cast<unsigned int>(points.size()), comm);
-      pattern.clear();
     }
 
     template <int dim>

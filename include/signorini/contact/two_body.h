@@ -356,6 +356,36 @@ namespace Signorini
         }
       };
 
+      /// Body 1's nodes as evaluation points (node_points), and the
+      /// evaluation points of the penalty (points): the nodes, or in the
+      /// integral form the Gauss points of the contact faces.
+      void
+      collect_points();
+
+      /// Body 2's faces on the target boundary into faces2: this rank's,
+      /// then every rank's in rank order (collective).
+      void
+      gather_target_faces();
+
+      /// The free ends of body 2's faces (ends no other face continues)
+      /// and the partition shape's ramp at each end.
+      void
+      mark_face_ends();
+
+      /// Throws InputError if either boundary is empty or both lie on one
+      /// body (collective).
+      void
+      check_boundaries() const;
+
+      /// The smallest and mean size of body 2's faces and the thinnest
+      /// layer where Phi > 0.
+      void
+      measure_faces();
+
+      /// extra_rows: the rows any rank's pairs may write to (collective).
+      void
+      find_extra_rows(const AffineConstraints<double> &constraints);
+
       Point<dim>
       position(const Point1 &p, const VectorType &u) const;
 
