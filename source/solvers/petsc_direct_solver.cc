@@ -85,6 +85,150 @@ namespace Signorini
         }
       return counts;
     }
+
+    /// Whether @p v holds on every rank of @p comm (collective).
+    bool
+    on_all_ranks(const MPI_Comm comm, const bool v)
+    {
+      int local = v ? 1 : 0, global = 0;
+      MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
+      return global == 1;
+    }
+
+    /// The size of the node blocks whose graph MUMPS is to order: 3 or 2
+    /// where every rank's rows split into such blocks and half of all of
+    /// them have one pattern, else 1 (collective).
+    int
+    node_block_size(const std::vector<PetscInt> &columns,
+                    const std::vector<int>      &row_start,
+                    const long long              first,
+                    const int                    n,
+                    const MPI_Comm               comm)
+    {
+      // MUMPS orders the graph of node blocks of k unknowns when half
+      // of the blocks have one pattern (on every rank together). The
+      // order of the blocks is then one order of the unknowns, so
+      // the factorisation is that of the same matrix whatever the
+      // other half; it only decides the fill.
+      auto      counts   = node_blocks(columns, row_start, first);
+      long long local[4] = {counts[0][0], counts[0][1], counts[1][0],
+                            counts[1][1]},
+                total[4] = {0, 0, 0, 0};
+      MPI_Allreduce(local, total, 4, MPI_LONG_LONG, MPI_SUM, comm);
+      // Every rank's rows must split into whole blocks.
+      int ranks_blocked[2] = {0, 0};
+      for (int i = 0; i < 2; ++i)
+        {
+          const int mine = n == 0 || counts[i][0] > 0;
+          MPI_Allreduce(&mine, &ranks_blocked[i], 1, MPI_INT, MPI_MIN, comm);
+        }
+      int block = 1;
+      for (int i = 0; i < 2 && block == 1; ++i)
+        if (ranks_blocked[i] == 1 && total[2 * i] > 0 &&
+            2 * total[2 * i + 1] >= total[2 * i])
+          block = 3 - i;
+      return block;
+    }
+
+    /// Create @p M, a symmetric PETSc matrix of @p n local rows (of
+    /// @p n_global) with room for exactly the given entries per row in
+    /// the diagonal and off-diagonal blocks.
+    void
+    create_matrix(const MPI_Comm               comm,
+                  const int                    n,
+                  const PetscInt               n_global,
+                  const std::vector<PetscInt> &diagonal,
+                  const std::vector<PetscInt> &off_diagonal,
+                  Mat                         &M)
+    {
+      check(MatCreate(comm, &M), "MatCreate");
+      check(MatSetSizes(M, n, n, n_global, n_global), "MatSetSizes");
+      check(MatSetType(M, MATAIJ), "MatSetType");
+      check(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
+            "MatSeqAIJSetPreallocation");
+      check(MatMPIAIJSetPreallocation(
+              M, 0, diagonal.data(), 0, off_diagonal.data()),
+            "MatMPIAIJSetPreallocation");
+      // Only the upper triangle is factorised: the Hessians are
+      // symmetric.
+      check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+      check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
+      check(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
+            "MatSetOption");
+    }
+
+    /// Create @p ksp: no iteration, only the Cholesky factorisation of
+    /// @p solver_type (MUMPS or CHOLMOD).
+    void
+    create_direct_solver(const MPI_Comm comm, const MatSolverType solver_type, KSP &ksp)
+    {
+      check(KSPCreate(comm, &ksp), "KSPCreate");
+      check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+      PC pc = nullptr;
+      check(KSPGetPC(ksp, &pc), "KSPGetPC");
+      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+      // The package's own fill-reducing ordering: PETSc's default for
+      // a factorisation is the natural one, which CHOLMOD would take
+      // as given (and fill the factor of a 34k-DoF 2D Hessian with
+      // gigabytes).
+      check(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
+            "PCFactorSetMatOrderingType");
+      check(PCFactorSetMatSolverType(pc, solver_type), "PCFactorSetMatSolverType");
+    }
+
+    /// Create the MUMPS factor of @p pc and set its controls, which must
+    /// be set before the analysis: the ordering @p mumps_ordering and,
+    /// with @p block > 1, the node blocks to order.
+    void
+    set_mumps_controls(PC pc, const int mumps_ordering, const int block)
+    {
+      // The factor exists from here on; its MUMPS controls must be
+      // set before the analysis. ICNTL(28) = 1: sequential
+      // analysis with the ordering of ICNTL(7) (deterministic,
+      // unlike MUMPS' parallel orderings); ICNTL(13) = 1: no
+      // ScaLAPACK on the root front, so that INFOG(12) counts
+      // every negative pivot; ICNTL(14): 50% more workspace than
+      // the analysis estimates.
+      check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+      Mat F = nullptr;
+      check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+      // The ordering goes through PETSc's options: on one rank
+      // PETSc 3.18 sets ICNTL(7) = 7 (MUMPS' own choice) when it
+      // initialises MUMPS at the analysis, after this call, so
+      // MatMumpsSetIcntl(F, 7, ...) had no effect there (every
+      // choice gave MUMPS' own pick: AMF for small matrices, PORD
+      // for large ones); the options are read after that. One set
+      // in PETSC_OPTIONS wins.
+      if (!ordering_from_command_line())
+        check(PetscOptionsSetValue(nullptr,
+                                   "-mat_mumps_icntl_7",
+                                   std::to_string(mumps_ordering).c_str()),
+              "PetscOptionsSetValue");
+      check(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
+      check(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
+      check(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
+      // ICNTL(15) = -k: the analysis orders the graph of the node
+      // blocks (half or a third of the unknowns, a quarter or a
+      // ninth of the edges): on the 2D 2e5-DoF rigid Hertz Hessian
+      // 10% fewer flops per factorisation and a shorter analysis
+      // (doc/performance.md).
+      if (block > 1)
+        check(MatMumpsSetIcntl(F, 15, -block), "MUMPS ICNTL(15)");
+    }
+
+    /// Why a factorisation failed, to follow the package's name.
+    std::string
+    factorization_failure(const bool not_definite, const MatFactorError error)
+    {
+      return not_definite ? ": the matrix is not positive definite" :
+             error == MAT_FACTOR_NUMERIC_ZEROPIVOT ?
+                            ": the matrix is singular (zero pivot)" :
+             error == MAT_FACTOR_OUTMEMORY ?
+                            ": out of memory in the factorisation" :
+             error == MAT_FACTOR_NOERROR ?
+                            ": the factorisation failed on another rank" :
+                            ": the factorisation failed";
+    }
   } // namespace
 
   /// The PETSc objects of one sparsity pattern.
@@ -168,15 +312,7 @@ namespace Signorini
     AssertThrow(mpi != nullptr,
                 dealii::ExcMessage("The matrix has no MPI communicator."));
     const MPI_Comm comm = mpi->Comm();
-    const auto     all  = [comm](const bool v) {
-      int local = v ? 1 : 0, global = 0;
-      MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
-      return global == 1;
-    };
-
-    const Epetra_BlockMap &rows = A.RowMap();
-    const Epetra_BlockMap &cols = A.ColMap();
-    const int              n    = A.NumMyRows();
+    const int      n    = A.NumMyRows();
     AssertThrow(x.MyLength() == n && b.MyLength() == n &&
                   x.NumVectors() == 1 && b.NumVectors() == 1,
                 dealii::ExcMessage("The vectors do not match the matrix rows."));
@@ -184,262 +320,205 @@ namespace Signorini
     try
       {
         const std::size_t hash = sparsity_pattern_hash(A);
-        if (!all(state && state->hash == hash))
+        if (!on_all_ranks(comm, state && state->hash == hash))
           {
             state.reset();
-            // PETSc's parallel matrices own contiguous row ranges in rank
-            // order; deal.II's DoF numbering on a distributed mesh gives
-            // exactly that, which is checked rather than assumed.
-            long long n_before = 0, n_mine = n;
-            MPI_Exscan(&n_mine, &n_before, 1, MPI_LONG_LONG, MPI_SUM, comm);
-            int rank = 0;
-            MPI_Comm_rank(comm, &rank);
-            if (rank == 0)
-              n_before = 0;
-            bool contiguous = true;
-            for (int r = 0; r < n && contiguous; ++r)
-              contiguous = rows.GID64(r) == n_before + r;
-            if (!all(contiguous))
-              {
-                message = name(package) +
-                          ": the rows a rank owns are not one contiguous range "
-                          "in rank order";
-                return false;
-              }
-            if (package == Package::cholmod && A.Comm().NumProc() > 1)
-              {
-                message = name(package) + " runs on one MPI rank only";
-                return false;
-              }
-
-            state           = std::make_unique<State>();
-            state->hash     = hash;
-            state->first    = n_before;
-            state->n_global = A.NumGlobalRows64();
-
-            std::vector<PetscInt> diagonal(n, 0), off_diagonal(n, 0);
-            state->row_start.assign(1, 0);
-            for (int r = 0; r < n; ++r)
-              {
-                int  m       = 0;
-                int *indices = nullptr;
-                A.Graph().ExtractMyRowView(r, m, indices);
-                for (int k = 0; k < m; ++k)
-                  {
-                    const long long c = cols.GID64(indices[k]);
-                    state->columns.push_back(static_cast<PetscInt>(c));
-                    if (c >= state->first && c < state->first + n)
-                      ++diagonal[r];
-                    else
-                      ++off_diagonal[r];
-                  }
-                state->row_start.push_back(state->columns.size());
-              }
-            {
-              // MUMPS orders the graph of node blocks of k unknowns when half
-              // of the blocks have one pattern (on every rank together). The
-              // order of the blocks is then one order of the unknowns, so
-              // the factorisation is that of the same matrix whatever the
-              // other half; it only decides the fill.
-              auto counts = node_blocks(state->columns, state->row_start,
-                                        state->first);
-              long long local[4] = {counts[0][0], counts[0][1], counts[1][0],
-                                    counts[1][1]},
-                        total[4] = {0, 0, 0, 0};
-              MPI_Allreduce(local, total, 4, MPI_LONG_LONG, MPI_SUM, comm);
-              // Every rank's rows must split into whole blocks.
-              int ranks_blocked[2] = {0, 0};
-              for (int i = 0; i < 2; ++i)
-                {
-                  const int mine = n == 0 || counts[i][0] > 0;
-                  MPI_Allreduce(&mine, &ranks_blocked[i], 1, MPI_INT, MPI_MIN, comm);
-                }
-              state->block = 1;
-              for (int i = 0; i < 2 && state->block == 1; ++i)
-                if (ranks_blocked[i] == 1 && total[2 * i] > 0 &&
-                    2 * total[2 * i + 1] >= total[2 * i])
-                  state->block = 3 - i;
-            }
-            Mat &M = state->matrix;
-            check(MatCreate(comm, &M), "MatCreate");
-            check(MatSetSizes(M, n, n, state->n_global, state->n_global),
-                  "MatSetSizes");
-            check(MatSetType(M, MATAIJ), "MatSetType");
-            check(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
-                  "MatSeqAIJSetPreallocation");
-            check(MatMPIAIJSetPreallocation(
-                    M, 0, diagonal.data(), 0, off_diagonal.data()),
-                  "MatMPIAIJSetPreallocation");
-            // Only the upper triangle is factorised: the Hessians are
-            // symmetric.
-            check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-            check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE),
-                  "MatSetOption");
-            check(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
-                  "MatSetOption");
-
-            check(KSPCreate(comm, &state->ksp), "KSPCreate");
-            check(KSPSetType(state->ksp, KSPPREONLY), "KSPSetType");
-            PC pc = nullptr;
-            check(KSPGetPC(state->ksp, &pc), "KSPGetPC");
-            check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-            // The package's own fill-reducing ordering: PETSc's default for
-            // a factorisation is the natural one, which CHOLMOD would take
-            // as given (and fill the factor of a 34k-DoF 2D Hessian with
-            // gigabytes).
-            check(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
-                  "PCFactorSetMatOrderingType");
-            check(PCFactorSetMatSolverType(pc,
-                                           package == Package::mumps ?
-                                             MATSOLVERMUMPS :
-                                             MATSOLVERCHOLMOD),
-                  "PCFactorSetMatSolverType");
-            ++n_symbolic;
+            if (!analyse(A, hash, comm, message))
+              return false;
           }
-
-        // Copy the values in (row by row, global indices) unless they are
-        // the ones factorised last: then only solve again.
-        State &s    = *state;
-        bool   same = s.factorized;
-        for (int r = 0, offset = 0; r < n && same; ++r)
-          {
-            int     m = 0;
-            double *v = nullptr;
-            A.ExtractMyRowView(r, m, v);
-            same = std::equal(v, v + m, s.values.begin() + offset);
-            offset += m;
-          }
-        if (!all(same))
-          {
-            s.factorized = false;
-            s.values.clear();
-            for (int r = 0; r < n; ++r)
-              {
-                int     m = 0;
-                double *v = nullptr;
-                A.ExtractMyRowView(r, m, v);
-                AssertThrow(m == s.row_start[r + 1] - s.row_start[r],
-                            dealii::ExcInternalError());
-                const PetscInt row = s.first + r;
-                check(MatSetValues(s.matrix, 1, &row, m,
-                                   s.columns.data() + s.row_start[r], v,
-                                   INSERT_VALUES),
-                      "MatSetValues");
-                s.values.insert(s.values.end(), v, v + m);
-              }
-            check(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY),
-                  "MatAssemblyBegin");
-            check(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY),
-                  "MatAssemblyEnd");
-            check(KSPSetOperators(s.ksp, s.matrix, s.matrix),
-                  "KSPSetOperators");
-            PC pc = nullptr;
-            check(KSPGetPC(s.ksp, &pc), "KSPGetPC");
-            if (package == Package::mumps)
-              {
-                // The factor exists from here on; its MUMPS controls must be
-                // set before the analysis. ICNTL(28) = 1: sequential
-                // analysis with the ordering of ICNTL(7) (deterministic,
-                // unlike MUMPS' parallel orderings); ICNTL(13) = 1: no
-                // ScaLAPACK on the root front, so that INFOG(12) counts
-                // every negative pivot; ICNTL(14): 50% more workspace than
-                // the analysis estimates.
-                check(PCFactorSetUpMatSolverType(pc),
-                      "PCFactorSetUpMatSolverType");
-                Mat F = nullptr;
-                check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-                // The ordering goes through PETSc's options: on one rank
-                // PETSc 3.18 sets ICNTL(7) = 7 (MUMPS' own choice) when it
-                // initialises MUMPS at the analysis, after this call, so
-                // MatMumpsSetIcntl(F, 7, ...) had no effect there (every
-                // choice gave MUMPS' own pick: AMF for small matrices, PORD
-                // for large ones); the options are read after that. One set
-                // in PETSC_OPTIONS wins.
-                if (!ordering_from_command_line())
-                  check(PetscOptionsSetValue(nullptr,
-                                             "-mat_mumps_icntl_7",
-                                             std::to_string(mumps_ordering).c_str()),
-                        "PetscOptionsSetValue");
-                check(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
-                check(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
-                check(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
-                // ICNTL(15) = -k: the analysis orders the graph of the node
-                // blocks (half or a third of the unknowns, a quarter or a
-                // ninth of the edges): on the 2D 2e5-DoF rigid Hertz Hessian
-                // 10% fewer flops per factorisation and a shorter analysis
-                // (doc/performance.md).
-                if (s.block > 1)
-                  check(MatMumpsSetIcntl(F, 15, -s.block), "MUMPS ICNTL(15)");
-              }
-            // CHOLMOD's supernodal Cholesky stops at the first pivot that
-            // is not positive, as a PETSc error (PETSC_ERR_MAT_CH_ZRPVT),
-            // not as the factor's error type; PETSc must not print it.
-            PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-            const PetscErrorCode setup = KSPSetUp(s.ksp);
-            PetscPopErrorHandler();
-            ++n_numeric;
-            const bool not_definite = setup == PETSC_ERR_MAT_CH_ZRPVT;
-            if (!not_definite)
-              check(setup, "KSPSetUp");
-
-            Mat F = nullptr;
-            check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-            MatFactorError error = MAT_FACTOR_NOERROR;
-            if (!not_definite)
-              check(MatFactorGetError(F, &error), "MatFactorGetError");
-            if (package == Package::mumps && !not_definite)
-              {
-                PetscInt value = 0;
-                check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
-                negative = static_cast<int>(value);
-                check(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
-                ordering = static_cast<int>(value);
-                block    = s.block;
-              }
-            else
-              negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;
-            if (!all(error == MAT_FACTOR_NOERROR && !not_definite))
-              {
-                state.reset();
-                message =
-                  name(package) +
-                  (not_definite ? ": the matrix is not positive definite" :
-                   error == MAT_FACTOR_NUMERIC_ZEROPIVOT ?
-                                  ": the matrix is singular (zero pivot)" :
-                   error == MAT_FACTOR_OUTMEMORY ?
-                                  ": out of memory in the factorisation" :
-                   error == MAT_FACTOR_NOERROR ?
-                                  ": the factorisation failed on another rank" :
-                                  ": the factorisation failed");
-                return false;
-              }
-            s.factorized = true;
-          }
-
-        Vec pb = nullptr, px = nullptr;
-        check(VecCreateMPIWithArray(
-                comm, 1, n, s.n_global, const_cast<double *>(b[0]), &pb),
-              "VecCreateMPIWithArray");
-        check(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
-              "VecCreateMPIWithArray");
-        const PetscErrorCode code = KSPSolve(s.ksp, pb, px);
-        VecDestroy(&pb);
-        VecDestroy(&px);
-        check(code, "KSPSolve");
-        KSPConvergedReason reason;
-        check(KSPGetConvergedReason(s.ksp, &reason), "KSPGetConvergedReason");
-        if (!all(reason >= 0))
-          {
-            state.reset();
-            message = name(package) + ": the solve failed (PETSc reason " +
-                      std::to_string(static_cast<int>(reason)) + ")";
-            return false;
-          }
+        // Copy the values in and factorise unless they are the ones
+        // factorised last: then only solve again.
+        if (!on_all_ranks(comm, same_values(A)) && !factorize(A, comm, message))
+          return false;
+        if (!solve_factorized(x, b, comm, message))
+          return false;
       }
     catch (const std::exception &e)
       {
         state.reset();
         message = e.what();
+        return false;
+      }
+    return true;
+  }
+
+  bool
+  PETScDirectSolver::analyse(const Epetra_CrsMatrix &A,
+                             const std::size_t       hash,
+                             const MPI_Comm          comm,
+                             std::string            &message)
+  {
+    const Epetra_BlockMap &rows = A.RowMap();
+    const Epetra_BlockMap &cols = A.ColMap();
+    const int              n    = A.NumMyRows();
+    // PETSc's parallel matrices own contiguous row ranges in rank
+    // order; deal.II's DoF numbering on a distributed mesh gives
+    // exactly that, which is checked rather than assumed.
+    long long n_before = 0, n_mine = n;
+    MPI_Exscan(&n_mine, &n_before, 1, MPI_LONG_LONG, MPI_SUM, comm);
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (rank == 0)
+      n_before = 0;
+    bool contiguous = true;
+    for (int r = 0; r < n && contiguous; ++r)
+      contiguous = rows.GID64(r) == n_before + r;
+    if (!on_all_ranks(comm, contiguous))
+      {
+        message = name(package) +
+                  ": the rows a rank owns are not one contiguous range "
+                  "in rank order";
+        return false;
+      }
+    if (package == Package::cholmod && A.Comm().NumProc() > 1)
+      {
+        message = name(package) + " runs on one MPI rank only";
+        return false;
+      }
+
+    state           = std::make_unique<State>();
+    state->hash     = hash;
+    state->first    = n_before;
+    state->n_global = A.NumGlobalRows64();
+
+    std::vector<PetscInt> diagonal(n, 0), off_diagonal(n, 0);
+    state->row_start.assign(1, 0);
+    for (int r = 0; r < n; ++r)
+      {
+        int  m       = 0;
+        int *indices = nullptr;
+        A.Graph().ExtractMyRowView(r, m, indices);
+        for (int k = 0; k < m; ++k)
+          {
+            const long long c = cols.GID64(indices[k]);
+            state->columns.push_back(static_cast<PetscInt>(c));
+            if (c >= state->first && c < state->first + n)
+              ++diagonal[r];
+            else
+              ++off_diagonal[r];
+          }
+        state->row_start.push_back(state->columns.size());
+      }
+    state->block =
+      node_block_size(state->columns, state->row_start, state->first, n, comm);
+    create_matrix(comm, n, state->n_global, diagonal, off_diagonal, state->matrix);
+    create_direct_solver(comm,
+                         package == Package::mumps ? MATSOLVERMUMPS :
+                                                     MATSOLVERCHOLMOD,
+                         state->ksp);
+    ++n_symbolic;
+    return true;
+  }
+
+  bool
+  PETScDirectSolver::same_values(const Epetra_CrsMatrix &A) const
+  {
+    const State &s    = *state;
+    const int    n    = A.NumMyRows();
+    bool         same = s.factorized;
+    for (int r = 0, offset = 0; r < n && same; ++r)
+      {
+        int     m = 0;
+        double *v = nullptr;
+        A.ExtractMyRowView(r, m, v);
+        same = std::equal(v, v + m, s.values.begin() + offset);
+        offset += m;
+      }
+    return same;
+  }
+
+  bool
+  PETScDirectSolver::factorize(const Epetra_CrsMatrix &A,
+                               const MPI_Comm          comm,
+                               std::string            &message)
+  {
+    State    &s = *state;
+    const int n = A.NumMyRows();
+    s.factorized = false;
+    s.values.clear();
+    for (int r = 0; r < n; ++r)
+      {
+        int     m = 0;
+        double *v = nullptr;
+        A.ExtractMyRowView(r, m, v);
+        AssertThrow(m == s.row_start[r + 1] - s.row_start[r],
+                    dealii::ExcInternalError());
+        const PetscInt row = s.first + r;
+        check(MatSetValues(s.matrix, 1, &row, m,
+                           s.columns.data() + s.row_start[r], v,
+                           INSERT_VALUES),
+              "MatSetValues");
+        s.values.insert(s.values.end(), v, v + m);
+      }
+    check(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    check(KSPSetOperators(s.ksp, s.matrix, s.matrix), "KSPSetOperators");
+    PC pc = nullptr;
+    check(KSPGetPC(s.ksp, &pc), "KSPGetPC");
+    if (package == Package::mumps)
+      set_mumps_controls(pc, mumps_ordering, s.block);
+    // CHOLMOD's supernodal Cholesky stops at the first pivot that
+    // is not positive, as a PETSc error (PETSC_ERR_MAT_CH_ZRPVT),
+    // not as the factor's error type; PETSc must not print it.
+    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    const PetscErrorCode setup = KSPSetUp(s.ksp);
+    PetscPopErrorHandler();
+    ++n_numeric;
+    const bool not_definite = setup == PETSC_ERR_MAT_CH_ZRPVT;
+    if (!not_definite)
+      check(setup, "KSPSetUp");
+
+    Mat F = nullptr;
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    MatFactorError error = MAT_FACTOR_NOERROR;
+    if (!not_definite)
+      check(MatFactorGetError(F, &error), "MatFactorGetError");
+    if (package == Package::mumps && !not_definite)
+      {
+        PetscInt value = 0;
+        check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
+        negative = static_cast<int>(value);
+        check(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
+        ordering = static_cast<int>(value);
+        block    = s.block;
+      }
+    else
+      negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;
+    if (!on_all_ranks(comm, error == MAT_FACTOR_NOERROR && !not_definite))
+      {
+        state.reset();
+        message = name(package) + factorization_failure(not_definite, error);
+        return false;
+      }
+    s.factorized = true;
+    return true;
+  }
+
+  bool
+  PETScDirectSolver::solve_factorized(Epetra_MultiVector       &x,
+                                      const Epetra_MultiVector &b,
+                                      const MPI_Comm            comm,
+                                      std::string              &message)
+  {
+    const State &s = *state;
+    const int    n = x.MyLength();
+    Vec          pb = nullptr, px = nullptr;
+    check(VecCreateMPIWithArray(
+            comm, 1, n, s.n_global, const_cast<double *>(b[0]), &pb),
+          "VecCreateMPIWithArray");
+    check(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
+          "VecCreateMPIWithArray");
+    const PetscErrorCode code = KSPSolve(s.ksp, pb, px);
+    VecDestroy(&pb);
+    VecDestroy(&px);
+    check(code, "KSPSolve");
+    KSPConvergedReason reason;
+    check(KSPGetConvergedReason(s.ksp, &reason), "KSPGetConvergedReason");
+    if (!on_all_ranks(comm, reason >= 0))
+      {
+        state.reset();
+        message = name(package) + ": the solve failed (PETSc reason " +
+                  std::to_string(static_cast<int>(reason)) + ")";
         return false;
       }
     return true;

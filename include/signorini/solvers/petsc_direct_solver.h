@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mpi.h>
+
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -109,6 +111,35 @@ namespace Signorini
 
   private:
     struct State;
+
+    /// A new state for the sparsity pattern of @p A (whose hash is
+    /// @p hash): its columns, node blocks, PETSc matrix and solver. False
+    /// (@p message says why) if PETSc cannot take the matrix's rows.
+    /// Collective.
+    bool
+    analyse(const Epetra_CrsMatrix &A,
+            std::size_t             hash,
+            MPI_Comm                comm,
+            std::string            &message);
+
+    /// Whether this rank's values of @p A are the ones factorised last.
+    bool
+    same_values(const Epetra_CrsMatrix &A) const;
+
+    /// Copy the values of @p A in and factorise. False (@p message says
+    /// why, and the state is forgotten) if that failed on any rank.
+    /// Collective.
+    bool
+    factorize(const Epetra_CrsMatrix &A, MPI_Comm comm, std::string &message);
+
+    /// Solve with the factorisation. False (@p message says why, and
+    /// the state is forgotten) if that failed on any rank. Collective.
+    bool
+    solve_factorized(Epetra_MultiVector       &x,
+                     const Epetra_MultiVector &b,
+                     MPI_Comm                  comm,
+                     std::string              &message);
+
     Package                package;
     int                    mumps_ordering;
     std::unique_ptr<State> state;
