@@ -251,6 +251,250 @@ namespace Signorini
     return is_descent(d);
   }
 
+  namespace
+  {
+    /// A linear solver that fails (e.g. CG without the fallback to the
+    /// direct solver) is the likely cause of a Newton failure: what to
+    /// add to the reason to say so ("" if none failed).
+    std::string
+    linear_cause(const NewtonMinimizer::Statistics &statistics)
+    {
+      if (statistics.linear_failures == 0)
+        return "";
+      return "; " + std::to_string(statistics.linear_failures) +
+             " linear solve(s) failed, the last: " + statistics.linear_message;
+    }
+
+    /// One line of progress per iteration.
+    void
+    print_iteration(ConditionalOStream &progress,
+                    const unsigned int  it,
+                    const double        residual,
+                    const Evaluation   &e)
+    {
+      std::ostringstream line;
+      line << "    it " << std::setw(2) << it << "  |g| "
+           << std::scientific << std::setprecision(3) << residual
+           << "  |g|/scale " << residual / std::max(e.force_scale, 1e-300)
+           << "  E " << std::setprecision(10) << e.value
+           << "  min J " << std::setprecision(4) << e.min_J;
+      progress << line.str() << std::endl;
+    }
+
+    /// Whether the iteration ends at iterate @p it: converged (then
+    /// statistics.converged is set) or failed (statistics.reason says
+    /// why).
+    bool
+    iteration_ends(const NewtonMinimizer::Parameters &parameters,
+                   const unsigned int                 it,
+                   const double                       residual,
+                   const double                       tolerance,
+                   const double                       energy_scale,
+                   const double                       last_decrease,
+                   NewtonMinimizer::Statistics       &statistics)
+    {
+      if (!std::isfinite(residual))
+        {
+          statistics.reason = "the gradient is not finite";
+          return true;
+        }
+      const bool energy_converged =
+        (it > 0 &&
+         std::abs(last_decrease) <= parameters.energy_tolerance * energy_scale);
+      if (residual <= tolerance && (it == 0 || energy_converged ||
+                                    residual <= parameters.absolute_tolerance))
+        {
+          statistics.converged = true;
+          return true;
+        }
+      if (it == parameters.max_iterations)
+        {
+          std::ostringstream msg;
+          msg << "no convergence in " << it << " Newton iterations (|g| = "
+              << residual << ", tolerance " << tolerance << ")";
+          statistics.reason = msg.str() + linear_cause(statistics);
+          return true;
+        }
+      return false;
+    }
+
+    /**
+     * The backtracking line search of one Newton iteration: along the
+     * direction d from the iterate u, whose energy is e and minus
+     * gradient rhs. The ghosted vector holds u (ghosted) on entry and is
+     * the work vector of the trials.
+     */
+    class LineSearch
+    {
+    public:
+      LineSearch(const NewtonMinimizer::Parameters &parameters,
+                 const double                       length_scale,
+                 ConditionalOStream                &progress,
+                 Objective                         &objective,
+                 const AffineConstraints<double>   &constraints,
+                 const VectorType                  &u,
+                 VectorType                        &ghosted,
+                 const VectorType                  &rhs,
+                 const VectorType                  &d)
+        : parameters(parameters)
+        , length_scale(length_scale)
+        , progress(progress)
+        , objective(objective)
+        , constraints(constraints)
+        , u(u)
+        , ghosted(ghosted)
+        , rhs(rhs)
+        , d(d)
+      {}
+
+      /**
+       * Search for a step: true if one is accepted, which is then in
+       * @p trial, with its length in alpha and its evaluation in trial_e.
+       * @p residual is |g| at u, @p energy_scale |strain energy| +
+       * |external work|.
+       */
+      bool
+      search(const Evaluation            &e,
+             const double                 residual,
+             const double                 energy_scale,
+             VectorType                  &trial,
+             NewtonMinimizer::Statistics &statistics)
+      {
+        const double slope = -(rhs * d); // g.d < 0
+        const double       noise =
+          1e3 * std::numeric_limits<double>::epsilon() * (energy_scale + std::abs(e.value));
+        alpha = first_step_length();
+        // The state u (ghosted) and g.u, for trials the objective limits
+        // (taken before any trial overwrites the ghosted vector).
+        VectorType u_ghosted;
+        double     rhs_u = 0.;
+        if (parameters.limit_trials)
+          {
+            u_ghosted = ghosted;
+            rhs_u     = rhs * u;
+          }
+        // The energy resolves a decrease only down to its round-off, and
+        // that is far above eps |E| where a stiff body is barely strained
+        // (psi is a difference of O(1) invariants: its error is about
+        // eps mu per unit volume whatever the strain). When the decrease a
+        // Newton step promises is within 1e3 x the estimated noise, an
+        // Armijo test on E is blind: a tiny step passes it by round-off
+        // alone, the iterate does not move and the load step is cut by
+        // chance (seen with another BLAS). There the step the limits allow
+        // is judged by the gradient norm first; backtracking on E is the
+        // fallback.
+        if (-slope <= 1e3 * noise && lowers_gradient_norm(residual, trial))
+          return true;
+        return backtrack(e, slope, noise, u_ghosted, rhs_u, trial, statistics);
+      }
+
+      /// The accepted step's length and its evaluation.
+      double     alpha = 1.;
+      Evaluation trial_e;
+
+    private:
+      /// The first trial step length: 1, or less where the largest
+      /// increment or the contact model (max_step) allows less.
+      double
+      first_step_length()
+      {
+        double step = 1.;
+        if (parameters.max_increment > 0. && length_scale > 0.)
+          {
+            const double largest = d.linfty_norm();
+            if (largest > parameters.max_increment * length_scale)
+              {
+                step = parameters.max_increment * length_scale / largest;
+                progress << "      step limited to " << step
+                         << " of the Newton step" << std::endl;
+              }
+          }
+        const double limit = objective.max_step(ghosted, d);
+        if (limit < step)
+          {
+            step = limit;
+            progress << "      step limited to " << step
+                     << " of the Newton step by the contact model" << std::endl;
+          }
+        return step;
+      }
+
+      /// Whether the step alpha leads to an admissible state with a
+      /// smaller gradient norm than @p residual (then in @p trial).
+      bool
+      lowers_gradient_norm(const double residual, VectorType &trial)
+      {
+        trial = u;
+        trial.add(alpha, d);
+        ghosted = trial;
+        VectorType trial_rhs(rhs);
+        trial_e = objective.evaluate(ghosted, constraints, &trial_rhs, nullptr);
+        if (trial_e.admissible && trial_rhs.l2_norm() < residual)
+          {
+            progress << "      energy decrease below round-off: step "
+                        "accepted on the gradient norm"
+                     << std::endl;
+            return true;
+          }
+        return false;
+      }
+
+      /// Backtracking on the energy (Armijo test with @p slope = g.d),
+      /// each trial first offered to the objective to limit.
+      bool
+      backtrack(const Evaluation            &e,
+                const double                 slope,
+                const double                 noise,
+                const VectorType            &u_ghosted,
+                const double                 rhs_u,
+                VectorType                  &trial,
+                NewtonMinimizer::Statistics &statistics)
+      {
+        for (unsigned int k = 0; k <= parameters.max_backtracks; ++k)
+          {
+            trial = u;
+            trial.add(alpha, d);
+            if (parameters.limit_trials && objective.limit_trial(u_ghosted, trial))
+              {
+                constraints.distribute(trial);
+                const double limited_slope = rhs_u - rhs * trial;
+                ghosted = trial;
+                trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+                if (limited_slope < 0. && trial_e.admissible &&
+                    trial_e.value <= e.value + parameters.armijo_c1 * limited_slope)
+                  {
+                    progress << "      trial limited by the contact model" << std::endl;
+                    return true;
+                  }
+                trial = u;
+                trial.add(alpha, d);
+              }
+            ghosted = trial;
+            trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+            if (trial_e.admissible &&
+                (trial_e.value <= e.value + parameters.armijo_c1 * alpha * slope ||
+                 // near convergence the decrease drowns in round-off:
+                 // accept a full step that does not increase E beyond it
+                 (alpha == 1. && -slope <= noise && trial_e.value <= e.value + noise)))
+              return true;
+            ++statistics.backtracks;
+            alpha *= parameters.backtrack_factor;
+          }
+        return false;
+      }
+
+      const NewtonMinimizer::Parameters &parameters;
+      const double                       length_scale;
+      ConditionalOStream                &progress;
+      Objective                         &objective;
+      const AffineConstraints<double>   &constraints;
+      const VectorType                  &u;
+      VectorType                        &ghosted;
+      const VectorType                  &rhs;
+      const VectorType                  &d;
+    };
+  } // namespace
+
   NewtonMinimizer::Statistics
   NewtonMinimizer::minimize(Objective                       &objective,
                             const AffineConstraints<double> &constraints,
@@ -260,14 +504,6 @@ namespace Signorini
                             VectorType                      &rhs)
   {
     Statistics statistics;
-    // A linear solver that fails (e.g. CG without the fallback to the
-    // direct solver) is the likely cause of a Newton failure: say so.
-    const auto linear_cause = [&statistics]() -> std::string {
-      if (statistics.linear_failures == 0)
-        return "";
-      return "; " + std::to_string(statistics.linear_failures) +
-             " linear solve(s) failed, the last: " + statistics.linear_message;
-    };
     VectorType d(u), trial(u);
 
     auto full_evaluation = [&]() {
@@ -303,39 +539,10 @@ namespace Signorini
         statistics.residual    = residual;
         statistics.force_scale = e.force_scale;
         statistics.evaluation  = e;
-
-        {
-          std::ostringstream line;
-          line << "    it " << std::setw(2) << it << "  |g| "
-               << std::scientific << std::setprecision(3) << residual
-               << "  |g|/scale " << residual / std::max(e.force_scale, 1e-300)
-               << "  E " << std::setprecision(10) << e.value
-               << "  min J " << std::setprecision(4) << e.min_J;
-          progress << line.str() << std::endl;
-        }
-
-        if (!std::isfinite(residual))
-          {
-            statistics.reason = "the gradient is not finite";
-            return statistics;
-          }
-        const bool energy_converged =
-          (it > 0 &&
-           std::abs(last_decrease) <= parameters.energy_tolerance * energy_scale);
-        if (residual <= tolerance && (it == 0 || energy_converged ||
-                                      residual <= parameters.absolute_tolerance))
-          {
-            statistics.converged = true;
-            return statistics;
-          }
-        if (it == parameters.max_iterations)
-          {
-            std::ostringstream msg;
-            msg << "no convergence in " << it << " Newton iterations (|g| = "
-                << residual << ", tolerance " << tolerance << ")";
-            statistics.reason = msg.str() + linear_cause();
-            return statistics;
-          }
+        print_iteration(progress, it, residual, e);
+        if (iteration_ends(parameters, it, residual, tolerance, energy_scale,
+                           last_decrease, statistics))
+          return statistics;
 
         const unsigned int regularized_before =
           statistics.regularized_steps + statistics.convexified_steps;
@@ -346,7 +553,7 @@ namespace Signorini
         if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
                                forcing, statistics))
           {
-            statistics.reason = "no descent direction found" + linear_cause();
+            statistics.reason = "no descent direction found" + linear_cause(statistics);
             return statistics;
           }
 
@@ -375,100 +582,9 @@ namespace Signorini
 
         // Backtracking line search on the energy.
         TimerOutput::Scope scope(timer, "line search");
-        const double slope = -(rhs * d); // g.d < 0
-        const double       noise =
-          1e3 * std::numeric_limits<double>::epsilon() * (energy_scale + std::abs(e.value));
-        double alpha = 1.;
-        if (parameters.max_increment > 0. && length_scale > 0.)
-          {
-            const double largest = d.linfty_norm();
-            if (largest > parameters.max_increment * length_scale)
-              {
-                alpha = parameters.max_increment * length_scale / largest;
-                progress << "      step limited to " << alpha
-                         << " of the Newton step" << std::endl;
-              }
-          }
-        {
-          const double limit = objective.max_step(ghosted, d);
-          if (limit < alpha)
-            {
-              alpha = limit;
-              progress << "      step limited to " << alpha
-                       << " of the Newton step by the contact model" << std::endl;
-            }
-        }
-        // The state u (ghosted) and g.u, for trials the objective limits
-        // (taken before any trial overwrites the ghosted vector).
-        VectorType u_ghosted;
-        double     rhs_u = 0.;
-        if (parameters.limit_trials)
-          {
-            u_ghosted = ghosted;
-            rhs_u     = rhs * u;
-          }
-        // The energy resolves a decrease only down to its round-off, and
-        // that is far above eps |E| where a stiff body is barely strained
-        // (psi is a difference of O(1) invariants: its error is about
-        // eps mu per unit volume whatever the strain). When the decrease a
-        // Newton step promises is within 1e3 x the estimated noise, an
-        // Armijo test on E is blind: a tiny step passes it by round-off
-        // alone, the iterate does not move and the load step is cut by
-        // chance (seen with another BLAS). There the step the limits allow
-        // is judged by the gradient norm first; backtracking on E is the
-        // fallback.
-        bool       accepted = false;
-        Evaluation trial_e;
-        if (-slope <= 1e3 * noise)
-          {
-            trial = u;
-            trial.add(alpha, d);
-            ghosted = trial;
-            VectorType trial_rhs(rhs);
-            trial_e = objective.evaluate(ghosted, constraints, &trial_rhs, nullptr);
-            if (trial_e.admissible && trial_rhs.l2_norm() < residual)
-              {
-                accepted = true;
-                progress << "      energy decrease below round-off: step "
-                            "accepted on the gradient norm"
-                         << std::endl;
-              }
-          }
-        for (unsigned int k = 0; !accepted && k <= parameters.max_backtracks; ++k)
-          {
-            trial = u;
-            trial.add(alpha, d);
-            if (parameters.limit_trials && objective.limit_trial(u_ghosted, trial))
-              {
-                constraints.distribute(trial);
-                const double limited_slope = rhs_u - rhs * trial;
-                ghosted = trial;
-                trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
-                if (limited_slope < 0. && trial_e.admissible &&
-                    trial_e.value <= e.value + parameters.armijo_c1 * limited_slope)
-                  {
-                    progress << "      trial limited by the contact model" << std::endl;
-                    accepted = true;
-                    break;
-                  }
-                trial = u;
-                trial.add(alpha, d);
-              }
-            ghosted = trial;
-            trial_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
-            if (trial_e.admissible &&
-                (trial_e.value <= e.value + parameters.armijo_c1 * alpha * slope ||
-                 // near convergence the decrease drowns in round-off:
-                 // accept a full step that does not increase E beyond it
-                 (alpha == 1. && -slope <= noise && trial_e.value <= e.value + noise)))
-              {
-                accepted = true;
-                break;
-              }
-            ++statistics.backtracks;
-            alpha *= parameters.backtrack_factor;
-          }
-        if (!accepted)
+        LineSearch         line_search(parameters, length_scale, progress, objective,
+                                       constraints, u, ghosted, rhs, d);
+        if (!line_search.search(e, residual, energy_scale, trial, statistics))
           {
             statistics.reason =
               "the line search found no admissible decrease of the energy "
@@ -477,9 +593,10 @@ namespace Signorini
             return statistics;
           }
         scope.stop();
-        if (alpha < 1.)
-          progress << "      line search: step length " << alpha << std::endl;
-        last_decrease = e.value - trial_e.value;
+        if (line_search.alpha < 1.)
+          progress << "      line search: step length " << line_search.alpha
+                   << std::endl;
+        last_decrease = e.value - line_search.trial_e.value;
         u             = trial;
         e             = full_evaluation();
         if (!e.admissible)
