@@ -37,6 +37,217 @@ namespace Signorini
         }
       return "unknown";
     }
+
+    /// The run's identity, status, mesh, machine and solver entries.
+    void
+    add_run_entries(Json &j, const Report &report)
+    {
+      j["program"]        = "signorini";
+      j["scene"]          = report.scene;
+      j["parameter file"] = report.parameter_file;
+      j["status"]         = report.status;
+      if (!report.reason.empty())
+        j["reason"] = report.reason;
+      if (report.interrupt_signal != 0)
+        {
+          j["interrupted by"]     = Interruption::signal_name(report.interrupt_signal);
+          j["interrupted during"] = report.interrupted_during;
+        }
+      if (!report.last_checkpoint.empty())
+        j["checkpoint"] = report.last_checkpoint;
+      if (!report.restarted_from.empty())
+        {
+          Json from = Json::array();
+          for (const auto &c : report.restarted_from)
+            from.push_back(c);
+          j["restarted from"] = from;
+        }
+      j["dimension"] = report.dimension;
+      Json &mesh     = j["mesh"];
+      mesh["cells"]  = report.n_cells;
+      mesh["dofs"]   = report.n_dofs;
+      mesh["polynomial degree"] = report.degree;
+      mesh["h min"]  = report.h_min;
+      mesh["h max"]  = report.h_max;
+      j["mpi ranks"] = report.n_ranks;
+      j["peak memory MB"] = report.peak_memory_mb;
+      j["threads per rank"] = MultithreadInfo::n_threads();
+      j["blas"]             = loaded_library("libblas");
+      j["lapack"]           = loaded_library("liblapack");
+      // Open MPI settings the program made before MPI_Init ("" if none).
+      j["mpi settings"]     = MpiEnvironment::applied();
+      Json materials_json = Json::array();
+      for (const auto &m : report.materials)
+        materials_json.push_back(m);
+      j["materials"] = materials_json;
+      Json &solver = j["solver"];
+      solver["method"]        = report.solver;
+      solver["linear solver"] = report.linear_solver;
+    }
+
+    /// The contact model's and the step solver's contact entries, and the
+    /// contact state of the last load step.
+    template <int dim>
+    void
+    add_contact_entries(Json                      &c,
+                        const Report              &report,
+                        const Contact::Model<dim> &contact,
+                        const StepSolver<dim>     &step_solver)
+    {
+      contact.write_summary(c);
+      step_solver.write_contact_summary(c);
+      if (!report.steps.empty())
+        {
+          c["active nodes"]           = report.steps.back().active_nodes;
+          c["max penetration over h"] = report.steps.back().penetration_ratio;
+          const Report::Step &last = report.steps.back();
+          c["area"]                 = last.contact_area;
+          Json force = Json::array(), moment = Json::array();
+          for (unsigned int d = 0; d < dim; ++d)
+            force.push_back(last.contact_force_vector[d]);
+          for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+            moment.push_back(last.contact_moment[d]);
+          c["resultant force"] = force;
+          c["resultant moment"] = moment;
+          c["moment about"]     = "origin";
+        }
+    }
+
+    /// One object per load step (@p iterations: the name of its
+    /// iteration count), with its contact state if there is contact.
+    template <int dim>
+    Json
+    steps_json(const Report &report, const std::string &iterations, const bool contact)
+    {
+      Json steps = Json::array();
+      for (const auto &s : report.steps)
+        {
+          Json o = Json::object();
+          o["time"]              = s.time;
+          o[iterations]          = s.newton_iterations;
+          o["backtracks"]        = s.backtracks;
+          o["regularized steps"] = s.regularized;
+          o["linear iterations"] = s.linear_iterations;
+          o["linear fallbacks"]  = s.linear_fallbacks;
+          o["cuts before"]       = s.cuts_before;
+          o["residual"]          = s.residual;
+          o["energy"]            = s.energy;
+          o["min J"]             = s.min_J;
+          if (!s.solver_status.empty())
+            o["solver status"] = s.solver_status;
+          if (!s.stages.empty())
+            {
+              Json stages = Json::array();
+              for (const auto &st : s.stages)
+                {
+                  Json so                 = Json::object();
+                  so["mu"]                = st.mu;
+                  so[iterations]          = st.newton_iterations;
+                  so["max penetration over h"] = st.penetration_ratio;
+                  if (!st.converged)
+                    so["converged"] = false; // tried again with a smaller jump
+                  stages.push_back(so);
+                }
+              o["penalty stages"] = stages;
+            }
+          if (contact)
+            {
+              o["active contact nodes"]   = s.active_nodes;
+              o["max penetration over h"] = s.penetration_ratio;
+              o["contact force"]          = s.contact_force_vector[dim - 1];
+              o["contact area"]           = s.contact_area;
+              if (s.has_pairs)
+                o["evaluated pairs"] = s.pairs;
+            }
+          steps.push_back(o);
+        }
+      return steps;
+    }
+
+    /// The refinement settings and one object per refinement cycle.
+    void
+    add_refinement_entries(Json                       &r,
+                           const Report               &report,
+                           const RefinementParameters &refinement_parameters,
+                           const std::string          &iterations)
+    {
+      r["estimator"]                = refinement_parameters.estimator_name();
+      r["strategy"]                 = refinement_parameters.strategy ==
+                              RefinementParameters::Strategy::fraction ?
+                                        "fraction" :
+                                        "number";
+      r["refine fraction"]          = refinement_parameters.refine_fraction;
+      r["coarsen fraction"]         = refinement_parameters.coarsen_fraction;
+      r["maximum level"]            = refinement_parameters.max_level;
+      r["contact band refinements"] = refinement_parameters.band_refinements;
+      Json cycles = Json::array();
+      for (const auto &c : report.cycles)
+        {
+          Json o               = Json::object();
+          o["cycle"]           = c.cycle;
+          o["cells"]           = c.n_cells;
+          o["dofs"]            = c.n_dofs;
+          o["contact nodes"]   = c.contact_nodes;
+          o["refined cells"]   = c.refined_cells;
+          o["h min"]           = c.h_min;
+          o[iterations]        = c.newton_iterations;
+          o["cycle wall time [s]"] = c.cycle_seconds;
+          o["wall time since start [s]"] = c.wall_seconds;
+          Json q = Json::object();
+          for (const auto &qq : c.quantities)
+            q[qq.name] = qq.value;
+          o["quantities"] = q;
+          cycles.push_back(o);
+        }
+      r["cycles"] = cycles;
+    }
+
+    /// The quantities of the scene: value and, where there is one, the
+    /// reference, the error and its tolerance.
+    Json
+    quantities_json(const Report &report)
+    {
+      Json quantities = Json::object();
+      for (const auto &q : report.quantities)
+        {
+          Json o     = Json::object();
+          o["value"] = q.value;
+          if (q.has_reference)
+            {
+              o["reference"]      = q.reference;
+              o["relative error"] = q.relative_error();
+              if (q.tolerance > 0.)
+                {
+                  o["tolerance"]        = q.tolerance;
+                  o["within tolerance"] = q.within_tolerance();
+                }
+            }
+          quantities[q.name] = o;
+        }
+      return quantities;
+    }
+
+    /// refinement_cycles.csv: one line per refinement cycle.
+    void
+    write_cycles_csv(std::ostream &cycles_csv, const Report &report)
+    {
+      cycles_csv << "cycle,cells,dofs,contact_nodes,refined_cells,h_min,"
+                 << report.iteration_name
+                 << "_iterations,cycle_wall_time,wall_time_since_start";
+      for (const auto &q : report.cycles.front().quantities)
+        cycles_csv << "," << q.name;
+      cycles_csv << "\n" << std::setprecision(12);
+      for (const auto &c : report.cycles)
+        {
+          cycles_csv << c.cycle << "," << c.n_cells << "," << c.n_dofs << ","
+                     << c.contact_nodes << "," << c.refined_cells << ","
+                     << c.h_min << "," << c.newton_iterations << ","
+                     << c.cycle_seconds << "," << c.wall_seconds;
+          for (const auto &q : c.quantities)
+            cycles_csv << "," << q.value;
+          cycles_csv << "\n";
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -52,47 +263,7 @@ namespace Signorini
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
     Json j = Json::object();
-    j["program"]        = "signorini";
-    j["scene"]          = report.scene;
-    j["parameter file"] = report.parameter_file;
-    j["status"]         = report.status;
-    if (!report.reason.empty())
-      j["reason"] = report.reason;
-    if (report.interrupt_signal != 0)
-      {
-        j["interrupted by"]     = Interruption::signal_name(report.interrupt_signal);
-        j["interrupted during"] = report.interrupted_during;
-      }
-    if (!report.last_checkpoint.empty())
-      j["checkpoint"] = report.last_checkpoint;
-    if (!report.restarted_from.empty())
-      {
-        Json from = Json::array();
-        for (const auto &c : report.restarted_from)
-          from.push_back(c);
-        j["restarted from"] = from;
-      }
-    j["dimension"] = report.dimension;
-    Json &mesh     = j["mesh"];
-    mesh["cells"]  = report.n_cells;
-    mesh["dofs"]   = report.n_dofs;
-    mesh["polynomial degree"] = report.degree;
-    mesh["h min"]  = report.h_min;
-    mesh["h max"]  = report.h_max;
-    j["mpi ranks"] = report.n_ranks;
-    j["peak memory MB"] = report.peak_memory_mb;
-    j["threads per rank"] = MultithreadInfo::n_threads();
-    j["blas"]             = loaded_library("libblas");
-    j["lapack"]           = loaded_library("liblapack");
-    // Open MPI settings the program made before MPI_Init ("" if none).
-    j["mpi settings"]     = MpiEnvironment::applied();
-    Json materials_json = Json::array();
-    for (const auto &m : report.materials)
-      materials_json.push_back(m);
-    j["materials"] = materials_json;
-    Json &solver = j["solver"];
-    solver["method"]        = report.solver;
-    solver["linear solver"] = report.linear_solver;
+    add_run_entries(j, report);
     j["final time"]              = report.final_time;
     j["load steps"]              = static_cast<unsigned int>(report.steps.size());
     j["step cuts"]               = report.step_cuts;
@@ -100,123 +271,15 @@ namespace Signorini
     const std::string iterations = report.iteration_name + " iterations";
     j[iterations] = report.newton_iterations;
     if (contact)
-      {
-        Json &c = j["contact"];
-        contact->write_summary(c);
-        step_solver.write_contact_summary(c);
-        if (!report.steps.empty())
-          {
-            c["active nodes"]           = report.steps.back().active_nodes;
-            c["max penetration over h"] = report.steps.back().penetration_ratio;
-            const Report::Step &last = report.steps.back();
-            c["area"]                 = last.contact_area;
-            Json force = Json::array(), moment = Json::array();
-            for (unsigned int d = 0; d < dim; ++d)
-              force.push_back(last.contact_force_vector[d]);
-            for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
-              moment.push_back(last.contact_moment[d]);
-            c["resultant force"] = force;
-            c["resultant moment"] = moment;
-            c["moment about"]     = "origin";
-          }
-      }
+      add_contact_entries(j["contact"], report, *contact, step_solver);
     if (incompressibility_constraints > 0)
       j["incompressibility constraints"] = incompressibility_constraints;
     step_solver.write_summary(j);
-    Json steps = Json::array();
-    for (const auto &s : report.steps)
-      {
-        Json o = Json::object();
-        o["time"]              = s.time;
-        o[iterations]          = s.newton_iterations;
-        o["backtracks"]        = s.backtracks;
-        o["regularized steps"] = s.regularized;
-        o["linear iterations"] = s.linear_iterations;
-        o["linear fallbacks"]  = s.linear_fallbacks;
-        o["cuts before"]       = s.cuts_before;
-        o["residual"]          = s.residual;
-        o["energy"]            = s.energy;
-        o["min J"]             = s.min_J;
-        if (!s.solver_status.empty())
-          o["solver status"] = s.solver_status;
-        if (!s.stages.empty())
-          {
-            Json stages = Json::array();
-            for (const auto &st : s.stages)
-              {
-                Json so                 = Json::object();
-                so["mu"]                = st.mu;
-                so[iterations]          = st.newton_iterations;
-                so["max penetration over h"] = st.penetration_ratio;
-                if (!st.converged)
-                  so["converged"] = false; // tried again with a smaller jump
-                stages.push_back(so);
-              }
-            o["penalty stages"] = stages;
-          }
-        if (contact)
-          {
-            o["active contact nodes"]   = s.active_nodes;
-            o["max penetration over h"] = s.penetration_ratio;
-            o["contact force"]          = s.contact_force_vector[dim - 1];
-            o["contact area"]           = s.contact_area;
-            if (s.has_pairs)
-              o["evaluated pairs"] = s.pairs;
-          }
-        steps.push_back(o);
-      }
-    j["steps"] = steps;
+    j["steps"] = steps_json<dim>(report, iterations, contact != nullptr);
     if (refinement_parameters.cycles > 0 || refinement_parameters.band_refinements > 0)
-      {
-        Json &r = j["mesh refinement"];
-        r["estimator"]                = refinement_parameters.estimator_name();
-        r["strategy"]                 = refinement_parameters.strategy ==
-                                RefinementParameters::Strategy::fraction ?
-                                          "fraction" :
-                                          "number";
-        r["refine fraction"]          = refinement_parameters.refine_fraction;
-        r["coarsen fraction"]         = refinement_parameters.coarsen_fraction;
-        r["maximum level"]            = refinement_parameters.max_level;
-        r["contact band refinements"] = refinement_parameters.band_refinements;
-        Json cycles = Json::array();
-        for (const auto &c : report.cycles)
-          {
-            Json o               = Json::object();
-            o["cycle"]           = c.cycle;
-            o["cells"]           = c.n_cells;
-            o["dofs"]            = c.n_dofs;
-            o["contact nodes"]   = c.contact_nodes;
-            o["refined cells"]   = c.refined_cells;
-            o["h min"]           = c.h_min;
-            o[iterations]        = c.newton_iterations;
-            o["cycle wall time [s]"] = c.cycle_seconds;
-            o["wall time since start [s]"] = c.wall_seconds;
-            Json q = Json::object();
-            for (const auto &qq : c.quantities)
-              q[qq.name] = qq.value;
-            o["quantities"] = q;
-            cycles.push_back(o);
-          }
-        r["cycles"] = cycles;
-      }
-    Json quantities = Json::object();
-    for (const auto &q : report.quantities)
-      {
-        Json o     = Json::object();
-        o["value"] = q.value;
-        if (q.has_reference)
-          {
-            o["reference"]      = q.reference;
-            o["relative error"] = q.relative_error();
-            if (q.tolerance > 0.)
-              {
-                o["tolerance"]        = q.tolerance;
-                o["within tolerance"] = q.within_tolerance();
-              }
-          }
-        quantities[q.name] = o;
-      }
-    j["quantities"] = quantities;
+      add_refinement_entries(j["mesh refinement"], report, refinement_parameters,
+                             iterations);
+    j["quantities"] = quantities_json(report);
     Json timing     = Json::object();
     for (const auto &t : report.timing)
       timing[t.first] = t.second;
@@ -233,23 +296,7 @@ namespace Signorini
       {
         files.push_back(
           std::make_unique<AtomicFile>(output_directory + "/refinement_cycles.csv"));
-        std::ostream &cycles_csv = files.back()->stream();
-        cycles_csv << "cycle,cells,dofs,contact_nodes,refined_cells,h_min,"
-                   << report.iteration_name
-                   << "_iterations,cycle_wall_time,wall_time_since_start";
-        for (const auto &q : report.cycles.front().quantities)
-          cycles_csv << "," << q.name;
-        cycles_csv << "\n" << std::setprecision(12);
-        for (const auto &c : report.cycles)
-          {
-            cycles_csv << c.cycle << "," << c.n_cells << "," << c.n_dofs << ","
-                       << c.contact_nodes << "," << c.refined_cells << ","
-                       << c.h_min << "," << c.newton_iterations << ","
-                       << c.cycle_seconds << "," << c.wall_seconds;
-            for (const auto &q : c.quantities)
-              cycles_csv << "," << q.value;
-            cycles_csv << "\n";
-          }
+        write_cycles_csv(files.back()->stream(), report);
       }
 
     for (auto &file : files)
