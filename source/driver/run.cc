@@ -484,7 +484,7 @@ namespace Signorini
         {
           std::cout << "\nResult (" << report.status << ", "
                     << report.steps.size() << " load steps, "
-                    << report.newton_iterations
+                    << report.iterations
                     << (report.iteration_name == "ipopt"          ? " Ipopt" :
                         report.iteration_name == "interior_point" ? " interior point" :
                                                                     " Newton")

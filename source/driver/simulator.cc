@@ -133,9 +133,9 @@ namespace Signorini
                                 Report::Step                      &record,
                                 const std::string                 &series)
   {
-    report.newton_iterations += stats.iterations;
+    report.iterations += stats.iterations;
     record.time              = t;
-    record.newton_iterations = stats.iterations;
+    record.iterations = stats.iterations;
     record.backtracks        = stats.backtracks;
     record.regularized       = stats.regularized_steps;
     record.linear_iterations = stats.linear_iterations;
@@ -326,7 +326,7 @@ namespace Signorini
       c.n_cells           = report.n_cells;
       c.n_dofs            = report.n_dofs;
       c.contact_nodes     = report.contact_nodes;
-      c.newton_iterations = iterations;
+      c.iterations = iterations;
       c.refined_cells     = refined;
       c.h_min             = report.h_min;
       c.cycle_seconds     = cycle_seconds;
@@ -337,7 +337,7 @@ namespace Signorini
     };
     if (report.cycles.empty())
       {
-        record_cycle(0, report.newton_iterations, 0, elapsed(run_timer));
+        record_cycle(0, report.iterations, 0, elapsed(run_timer));
         {
           TimerOutput::Scope scope(*timer, "output");
           postprocessor->write_output(scene->solution_ghosted, 0, 0, true, "refinement");

@@ -345,7 +345,7 @@ namespace Signorini
             row.cells         = report.n_cells;
             row.dofs          = report.n_dofs;
             row.contact_nodes = report.contact_nodes;
-            row.iterations    = report.newton_iterations;
+            row.iterations    = report.iterations;
             row.wall          = report.timing.at("total");
             row.timing        = report.timing;
             rows.push_back(row);
@@ -356,7 +356,7 @@ namespace Signorini
             for (const auto &c : report.cycles)
               {
                 Row row = make_row(c.quantities);
-                iterations += c.newton_iterations;
+                iterations += c.iterations;
                 row.cycle         = c.cycle;
                 row.cells         = c.n_cells;
                 row.dofs          = c.n_dofs;

@@ -124,7 +124,7 @@ namespace Signorini
         {
           Json o = Json::object();
           o["time"]              = s.time;
-          o[iterations]          = s.newton_iterations;
+          o[iterations]          = s.iterations;
           o["backtracks"]        = s.backtracks;
           o["regularized steps"] = s.regularized;
           o["linear iterations"] = s.linear_iterations;
@@ -142,7 +142,7 @@ namespace Signorini
                 {
                   Json so                 = Json::object();
                   so["mu"]                = st.mu;
-                  so[iterations]          = st.newton_iterations;
+                  so[iterations]          = st.iterations;
                   so["max penetration over h"] = st.penetration_ratio;
                   if (!st.converged)
                     so["converged"] = false; // tried again with a smaller jump
@@ -190,7 +190,7 @@ namespace Signorini
           o["contact nodes"]   = c.contact_nodes;
           o["refined cells"]   = c.refined_cells;
           o["h min"]           = c.h_min;
-          o[iterations]        = c.newton_iterations;
+          o[iterations]        = c.iterations;
           o["cycle wall time [s]"] = c.cycle_seconds;
           o["wall time since start [s]"] = c.wall_seconds;
           Json q = Json::object();
@@ -241,7 +241,7 @@ namespace Signorini
         {
           cycles_csv << c.cycle << "," << c.n_cells << "," << c.n_dofs << ","
                      << c.contact_nodes << "," << c.refined_cells << ","
-                     << c.h_min << "," << c.newton_iterations << ","
+                     << c.h_min << "," << c.iterations << ","
                      << c.cycle_seconds << "," << c.wall_seconds;
           for (const auto &q : c.quantities)
             cycles_csv << "," << q.value;
@@ -269,7 +269,7 @@ namespace Signorini
     j["step cuts"]               = report.step_cuts;
     // Iterations are Newton's or Ipopt's (also per penalty stage).
     const std::string iterations = report.iteration_name + " iterations";
-    j[iterations] = report.newton_iterations;
+    j[iterations] = report.iterations;
     if (contact)
       add_contact_entries(j["contact"], report, *contact, step_solver);
     if (incompressibility_constraints > 0)
@@ -342,7 +342,7 @@ namespace Signorini
     // killed right now) sees whole rows only.
     std::ostringstream row;
     row << std::setprecision(12) << index << "," << s.time << ","
-        << s.newton_iterations << "," << s.backtracks << "," << s.regularized
+        << s.iterations << "," << s.backtracks << "," << s.regularized
         << "," << s.linear_iterations << "," << s.linear_fallbacks << ","
         << s.cuts_before << "," << s.residual << "," << s.energy << ","
         << s.min_J << "," << s.stages.size() << ","

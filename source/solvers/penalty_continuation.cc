@@ -245,7 +245,7 @@ namespace Signorini
     // result's.
     const auto run_stage = [&](const double loose_tolerance) {
       result.last = solve_stage(mu, u, loose_tolerance);
-      result.newton_iterations += result.last.iterations;
+      result.iterations += result.last.iterations;
       result.linear_iterations += result.last.linear_iterations;
       result.linear_fallbacks += result.last.linear_fallbacks;
     };

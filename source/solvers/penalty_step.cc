@@ -177,7 +177,7 @@ namespace Signorini
                            scene.solution, scene.solution_ghosted,
                            this->progress);
     stats                   = result.last;
-    stats.iterations        = result.newton_iterations;
+    stats.iterations        = result.iterations;
     // Over all stages and the tangents between them.
     stats.linear_iterations =
       result.linear_iterations + tangent_solves.linear_iterations;

@@ -21,7 +21,9 @@ namespace Signorini
     struct Step
     {
       double       time;
-      unsigned int newton_iterations;
+      /// Iterations of the step's method (iteration_name: Newton, Ipopt or
+      /// the interior point method), over all penalty stages.
+      unsigned int iterations;
       unsigned int backtracks;
       unsigned int regularized;
       unsigned int linear_iterations;
@@ -46,7 +48,7 @@ namespace Signorini
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &time &newton_iterations &backtracks &regularized &linear_iterations;
+        ar &time &iterations &backtracks &regularized &linear_iterations;
         ar &linear_fallbacks &cuts_before &residual &energy &min_J &stages;
         ar &solver_status &active_nodes &penetration_ratio;
         ar &contact_force_vector &contact_moment &contact_area &has_pairs &pairs;
@@ -61,7 +63,7 @@ namespace Signorini
       unsigned long long    n_cells = 0;
       unsigned long long    n_dofs  = 0;
       unsigned int          contact_nodes     = 0;
-      unsigned int          newton_iterations = 0; // of this cycle
+      unsigned int          iterations = 0; // of this cycle
       unsigned int          refined_cells     = 0; // flagged to make its mesh
       double                h_min = 0.;
       double                cycle_seconds = 0.;  // wall time of this cycle
@@ -73,7 +75,7 @@ namespace Signorini
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &cycle &n_cells &n_dofs &contact_nodes &newton_iterations;
+        ar &cycle &n_cells &n_dofs &contact_nodes &iterations;
         ar &refined_cells &h_min &cycle_seconds &wall_seconds &quantities &timing;
       }
     };
@@ -104,7 +106,7 @@ namespace Signorini
     std::vector<std::string> restarted_from;
     double                   final_time        = 0.;
     unsigned int             step_cuts         = 0;
-    unsigned int             newton_iterations = 0;
+    unsigned int             iterations        = 0; // all steps, iteration_name's
     std::vector<Step>        steps;
     std::vector<Cycle>       cycles; // with Mesh refinement > Number of cycles > 0
     double                   peak_memory_mb = 0.; // largest VmHWM of the ranks
@@ -119,7 +121,7 @@ namespace Signorini
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &final_time &step_cuts &newton_iterations &steps &cycles &quantities;
+      ar &final_time &step_cuts &iterations &steps &cycles &quantities;
       ar &timing &restarted_from;
     }
 
@@ -129,7 +131,7 @@ namespace Signorini
     {
       final_time        = saved.final_time;
       step_cuts         = saved.step_cuts;
-      newton_iterations = saved.newton_iterations;
+      iterations = saved.iterations;
       steps             = saved.steps;
       cycles            = saved.cycles;
       quantities        = saved.quantities;

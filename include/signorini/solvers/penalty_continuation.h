@@ -19,7 +19,7 @@ namespace Signorini
   struct PenaltyStage
   {
     double       mu                = 0.;
-    unsigned int newton_iterations = 0;
+    unsigned int iterations        = 0; // of the stage's minimiser (Newton or Ipopt)
     double       penetration_ratio = 0.;
     // false: the stage's solver failed and the stage was tried again
     // from the previous stage's solution with a smaller jump in mu.
@@ -29,7 +29,7 @@ namespace Signorini
     void
     serialize(Archive &ar, const unsigned int)
     {
-      ar &mu &newton_iterations &penetration_ratio &converged;
+      ar &mu &iterations &penetration_ratio &converged;
     }
   };
 
@@ -42,7 +42,7 @@ namespace Signorini
     unsigned int       linear_iterations = 0; // over all stages
     unsigned int       linear_fallbacks  = 0; // over all stages
     std::vector<PenaltyStage> stages;
-    unsigned int       newton_iterations = 0;
+    unsigned int       iterations        = 0; // over all stages
     NewtonMinimizer::Statistics last;
     std::vector<double>         forces; // nodal forces at the end
     std::string                 reason;
