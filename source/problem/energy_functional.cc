@@ -243,6 +243,282 @@ namespace Signorini
                              s.Kt.data());
     }
 
+    /**
+     * Reads a cell's nodal values of the ghosted vector u. Locally owned
+     * DoFs come straight from the vector's storage: deal.II's owned DoFs
+     * are one contiguous range, stored contiguously (the vector's map is
+     * sorted by global index), which the constructor checks; ghosts go
+     * through the map.
+     */
+    class NodalValueReader
+    {
+    public:
+      NodalValueReader(const VectorType &u, const IndexSet &owned)
+        : u(u)
+        , u_values(u.trilinos_vector()[0])
+        , first_owned(owned.n_elements() > 0 ? *owned.begin() : 0)
+        , n_owned(owned.n_elements())
+      {
+        const Epetra_BlockMap &u_map = u.trilinos_vector().Map();
+        owned_offset =
+          n_owned > 0 ? u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
+                          first_owned)) :
+                        0;
+        direct_read =
+          n_owned > 0 && owned.is_contiguous() && owned_offset >= 0 &&
+          u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
+            first_owned + n_owned - 1)) ==
+            owned_offset + static_cast<int>(n_owned) - 1;
+      }
+
+      /// values[k] = u(dofs[k]).
+      void
+      read(const std::vector<types::global_dof_index> &dofs,
+           std::vector<double>                        &values) const
+      {
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          values[k] = direct_read && dofs[k] - first_owned < n_owned ?
+                        u_values[owned_offset + (dofs[k] - first_owned)] :
+                        u(dofs[k]);
+      }
+
+    private:
+      const VectorType             &u;
+      const double                 *u_values;
+      const types::global_dof_index first_owned;
+      const types::global_dof_index n_owned;
+      int                           owned_offset;
+      bool                          direct_read;
+    };
+
+    /**
+     * The per-cell work of one evaluation: a cell's energy and its local
+     * right-hand side and Hessian, and the work of the traction on its
+     * boundary faces. Shared by mesh_loop's threads (it only reads its
+     * members); its functions are defined here, in the energy's
+     * translation unit, so that the compiler sees the whole cell loop.
+     */
+    template <int dim>
+    struct CellAssembler
+    {
+      const std::map<types::material_id, const Material::Interface *> &materials;
+      const BoundaryConditions<dim>                                    &bc;
+      const VectorType                                                 &u;
+      const NodalValueReader                                           &nodal_values;
+      const FiniteElement<dim>                                         &fe;
+      /// The traction and the body force (null if the scene has none).
+      Function<dim>     *traction;
+      Function<dim>     *body_force;
+      const unsigned int dofs_per_cell;
+      const bool         want_gradient;
+      const bool         want_hessian;
+
+      /// Evaluate the cell into @p c (c.admissible false if F is not
+      /// admissible at one of its quadrature points).
+      template <class CellIterator>
+      void
+      cell(const CellIterator &cell, Scratch<dim> &s, Copy &c) const
+      {
+        s.fe_values.reinit(
+          static_cast<typename Triangulation<dim>::cell_iterator>(cell));
+        c.reset(); // mesh_loop reuses one copy object per thread
+        c.dofs.resize(dofs_per_cell);
+        cell->get_dof_indices(c.dofs);
+        c.cell_index = cell->active_cell_index();
+        c.active     = true;
+        if (want_gradient)
+          c.rhs.reinit(dofs_per_cell);
+        if (want_hessian)
+          c.matrix.reinit(dofs_per_cell, dofs_per_cell);
+
+        const auto material_it = materials.find(cell->material_id());
+        AssertThrow(material_it != materials.end(),
+                    ExcMessage("no material for material id " +
+                               std::to_string(cell->material_id())));
+        const Material::Interface &material = *material_it->second;
+
+        prepare(s, c);
+        if (!integrate(material, s, c))
+          return;
+        write_local_system(s, c);
+      }
+
+      /// Read the cell's nodal values, interpolate them and evaluate the
+      /// body force at the quadrature points (if there is one), and size
+      /// the buffers of the integration.
+      void
+      prepare(Scratch<dim> &s, const Copy &c) const
+      {
+        const unsigned int n_q     = s.fe_values.n_quadrature_points;
+        const unsigned int n_nodes = dofs_per_cell / dim;
+        s.node_grads.resize(n_nodes);
+        s.local_u.resize(dofs_per_cell);
+        nodal_values.read(c.dofs, s.local_u);
+        if (bc.has_body_force())
+          {
+            s.values.assign(n_q, Tensor<1, dim>());
+            for (unsigned int q = 0; q < n_q; ++q)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                s.values[q][s.shape_component[i]] +=
+                  s.local_u[i] * s.fe_values.shape_value(s.shape_node[i], q);
+            s.loads.resize(n_q, Vector<double>(dim));
+            body_force->vector_value_list(s.fe_values.get_quadrature_points(),
+                                         s.loads);
+          }
+        // The Hessian is accumulated node block by node block over the
+        // quadrature points, for the component pairs c <= d only (it is
+        // symmetric): Kt[p(c,d)][a][b] = sum_q JxW sum_JL A[c][J][d][L]
+        // g_a[J] g_b[L], with the scalar gradients g stored as gT[L][a] so
+        // that the innermost loops run over contiguous nodes.
+        constexpr unsigned int n_pairs = dim * (dim + 1) / 2;
+        if (want_hessian)
+          {
+            s.gT.resize(dim * n_nodes);
+            s.AGt.resize(dim * n_nodes);
+            s.Kt.assign(n_pairs * n_nodes * n_nodes, 0.);
+          }
+      }
+
+      /// The loop over the quadrature points: strain energy, work of the
+      /// body force, internal and external forces (in s.f_int, s.f_ext)
+      /// and the Hessian's node blocks (in s.Kt). False, with
+      /// c.admissible false, at the first point where F is inadmissible.
+      bool
+      integrate(const Material::Interface &material, Scratch<dim> &s, Copy &c) const
+      {
+        const unsigned int      n_q     = s.fe_values.n_quadrature_points;
+        const unsigned int      n_nodes = dofs_per_cell / dim;
+        Material::Response<dim> response;
+        std::vector<double>    &f_int = s.f_int;
+        std::vector<double>    &f_ext = s.f_ext;
+        f_int.assign(want_gradient ? dofs_per_cell : 0, 0.);
+        f_ext.assign(want_gradient ? dofs_per_cell : 0, 0.);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            // The scalar gradients once per node (not per shape function).
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              s.node_grads[a] = s.fe_values.shape_grad(a, q);
+            Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              F[s.shape_component[i]] += s.local_u[i] * s.node_grads[s.shape_node[i]];
+            const double J = determinant(F);
+            c.min_J        = std::min(c.min_J, J);
+            if (!Material::evaluate(material, F, response, want_gradient) ||
+                !(J > 0.))
+              {
+                c.admissible = false;
+                return false;
+              }
+            const double JxW = s.fe_values.JxW(q);
+            c.strain_energy += response.psi * JxW;
+
+            if (bc.has_body_force())
+              for (unsigned int d = 0; d < dim; ++d)
+                c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
+
+            if (!want_gradient)
+              continue;
+
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const unsigned int ci = s.shape_component[i];
+                f_int[i] += (response.P[ci] * s.node_grads[s.shape_node[i]]) * JxW;
+                if (bc.has_body_force())
+                  f_ext[i] += s.loads[q][ci] *
+                              s.fe_values.shape_value(s.shape_node[i], q) * JxW;
+              }
+
+            if (!want_hessian)
+              continue;
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              for (unsigned int L = 0; L < dim; ++L)
+                s.gT[L * n_nodes + a] = s.node_grads[a][L];
+            if (n_nodes == (1u << dim))
+              accumulate_hessian<dim, (1u << dim)>(response.A, JxW, s);
+            else
+              accumulate_hessian<dim, 0>(response.A, JxW, s);
+          }
+        return true;
+      }
+
+      /// The local Hessian from its node blocks, the local right-hand
+      /// side f_ext - f_int and the cell's share of the force scale.
+      void
+      write_local_system(const Scratch<dim> &s, Copy &c) const
+      {
+        if (want_hessian)
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              c.matrix(i, j) = s.Kt[s.block_entry[i * dofs_per_cell + j]];
+
+        if (want_gradient)
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              c.rhs(i) = s.f_ext[i] - s.f_int[i];
+              c.force_sq += s.f_int[i] * s.f_int[i] + s.f_ext[i] * s.f_ext[i];
+            }
+      }
+
+      /// Add the work of the traction on the face @p face_no of the cell
+      /// (if it is on a traction boundary) and its forces to @p c.
+      template <class CellIterator>
+      void
+      traction_face(const CellIterator &cell,
+                    const unsigned int  face_no,
+                    Scratch<dim>       &s,
+                    Copy               &c) const
+      {
+        if (!c.admissible ||
+            !bc.is_traction_boundary(cell->face(face_no)->boundary_id()))
+          return;
+        const FEValuesExtractors::Vector displacement(0);
+        s.fe_face_values.reinit(cell, face_no);
+        const unsigned int n_q = s.fe_face_values.n_quadrature_points;
+        s.values.resize(n_q);
+        s.fe_face_values[displacement].get_function_values(u, s.values);
+        s.loads.resize(n_q, Vector<double>(dim));
+        traction->vector_value_list(s.fe_face_values.get_quadrature_points(),
+                                   s.loads);
+        std::vector<double> f_ext(dofs_per_cell, 0.);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double JxW = s.fe_face_values.JxW(q);
+            for (unsigned int d = 0; d < dim; ++d)
+              c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
+            if (want_gradient)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  f_ext[i] += s.loads[q][ci] *
+                              s.fe_face_values.shape_value(i, q) * JxW;
+                }
+          }
+        if (want_gradient)
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              c.rhs(i) += f_ext[i];
+              c.force_sq += f_ext[i] * f_ext[i];
+            }
+      }
+    };
+
+    /// Sum the cells' contributions of all ranks into @p result (and the
+    /// force scale from the ranks' @p force_sq); the state is inadmissible
+    /// if it is on any rank or if the energy is not finite (collective).
+    void
+    sum_over_ranks(Evaluation &result, const double force_sq, const MPI_Comm comm)
+    {
+      result.strain_energy = Utilities::MPI::sum(result.strain_energy, comm);
+      result.external_work = Utilities::MPI::sum(result.external_work, comm);
+      result.min_J         = Utilities::MPI::min(result.min_J, comm);
+      result.force_scale   = std::sqrt(Utilities::MPI::sum(force_sq, comm));
+      result.admissible =
+        Utilities::MPI::min(result.admissible ? 1 : 0, comm) == 1;
+      result.value = result.strain_energy - result.external_work;
+      if (!std::isfinite(result.value))
+        result.admissible = false;
+    }
+
   } // namespace
 
   template <int dim>
@@ -275,7 +551,6 @@ namespace Signorini
 
     const FiniteElement<dim> &fe            = dof_handler.get_fe();
     const unsigned int        dofs_per_cell = fe.n_dofs_per_cell();
-    const FEValuesExtractors::Vector displacement(0);
 
     // Function objects are shared between threads: FunctionParser is
     // thread safe for evaluation, and set_time happens before the loop.
@@ -288,176 +563,23 @@ namespace Signorini
     if (body_force)
       body_force->set_time(time);
 
-    // The cell's nodal values are read straight from the vector's storage
-    // for locally owned DoFs: deal.II's owned DoFs are one contiguous
-    // range, stored contiguously (the vector's map is sorted by global
-    // index), which is checked here; ghosts go through the map.
-    const IndexSet  &owned       = dof_handler.locally_owned_dofs();
-    const double    *u_values    = u.trilinos_vector()[0];
-    const Epetra_BlockMap &u_map = u.trilinos_vector().Map();
-    const types::global_dof_index first_owned =
-      owned.n_elements() > 0 ? *owned.begin() : 0;
-    const types::global_dof_index n_owned = owned.n_elements();
-    const int owned_offset =
-      n_owned > 0 ? u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
-                      first_owned)) :
-                    0;
-    const bool direct_read =
-      n_owned > 0 && owned.is_contiguous() && owned_offset >= 0 &&
-      u_map.LID(static_cast<TrilinosWrappers::types::int_type>(
-        first_owned + n_owned - 1)) ==
-        owned_offset + static_cast<int>(n_owned) - 1;
-    const auto read_values = [&](const std::vector<types::global_dof_index> &dofs,
-                                 std::vector<double> &values) {
-      for (unsigned int k = 0; k < dofs.size(); ++k)
-        values[k] = direct_read && dofs[k] - first_owned < n_owned ?
-                      u_values[owned_offset + (dofs[k] - first_owned)] :
-                      u(dofs[k]);
-    };
-
+    const NodalValueReader   nodal_values(u, dof_handler.locally_owned_dofs());
+    const CellAssembler<dim> assembler{materials,
+                                       bc,
+                                       u,
+                                       nodal_values,
+                                       fe,
+                                       traction,
+                                       body_force,
+                                       dofs_per_cell,
+                                       want_gradient,
+                                       want_hessian};
     auto cell_worker = [&](const auto &cell, Scratch<dim> &s, Copy &c) {
-      s.fe_values.reinit(
-        static_cast<typename Triangulation<dim>::cell_iterator>(cell));
-      const unsigned int n_q = s.fe_values.n_quadrature_points;
-      c.reset(); // mesh_loop reuses one copy object per thread
-      c.dofs.resize(dofs_per_cell);
-      cell->get_dof_indices(c.dofs);
-      c.cell_index = cell->active_cell_index();
-      c.active     = true;
-      if (want_gradient)
-        c.rhs.reinit(dofs_per_cell);
-      if (want_hessian)
-        c.matrix.reinit(dofs_per_cell, dofs_per_cell);
-
-      const auto material_it = materials.find(cell->material_id());
-      AssertThrow(material_it != materials.end(),
-                  ExcMessage("no material for material id " +
-                             std::to_string(cell->material_id())));
-      const Material::Interface &material = *material_it->second;
-
-      const unsigned int n_nodes = dofs_per_cell / dim;
-      s.node_grads.resize(n_nodes);
-      s.local_u.resize(dofs_per_cell);
-      read_values(c.dofs, s.local_u);
-      if (bc.has_body_force())
-        {
-          s.values.assign(n_q, Tensor<1, dim>());
-          for (unsigned int q = 0; q < n_q; ++q)
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              s.values[q][s.shape_component[i]] +=
-                s.local_u[i] * s.fe_values.shape_value(s.shape_node[i], q);
-          s.loads.resize(n_q, Vector<double>(dim));
-          body_force->vector_value_list(s.fe_values.get_quadrature_points(),
-                                       s.loads);
-        }
-      // The Hessian is accumulated node block by node block over the
-      // quadrature points, for the component pairs c <= d only (it is
-      // symmetric): Kt[p(c,d)][a][b] = sum_q JxW sum_JL A[c][J][d][L]
-      // g_a[J] g_b[L], with the scalar gradients g stored as gT[L][a] so
-      // that the innermost loops run over contiguous nodes.
-      constexpr unsigned int n_pairs = dim * (dim + 1) / 2;
-      if (want_hessian)
-        {
-          s.gT.resize(dim * n_nodes);
-          s.AGt.resize(dim * n_nodes);
-          s.Kt.assign(n_pairs * n_nodes * n_nodes, 0.);
-        }
-
-      Material::Response<dim> response;
-      std::vector<double>    &f_int = s.f_int;
-      std::vector<double>    &f_ext = s.f_ext;
-      f_int.assign(want_gradient ? dofs_per_cell : 0, 0.);
-      f_ext.assign(want_gradient ? dofs_per_cell : 0, 0.);
-      for (unsigned int q = 0; q < n_q; ++q)
-        {
-          // The scalar gradients once per node (not per shape function).
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            s.node_grads[a] = s.fe_values.shape_grad(a, q);
-          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            F[s.shape_component[i]] += s.local_u[i] * s.node_grads[s.shape_node[i]];
-          const double J = determinant(F);
-          c.min_J        = std::min(c.min_J, J);
-          if (!Material::evaluate(material, F, response, want_gradient) ||
-              !(J > 0.))
-            {
-              c.admissible = false;
-              return;
-            }
-          const double JxW = s.fe_values.JxW(q);
-          c.strain_energy += response.psi * JxW;
-
-          if (bc.has_body_force())
-            for (unsigned int d = 0; d < dim; ++d)
-              c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
-
-          if (!want_gradient)
-            continue;
-
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              const unsigned int ci = s.shape_component[i];
-              f_int[i] += (response.P[ci] * s.node_grads[s.shape_node[i]]) * JxW;
-              if (bc.has_body_force())
-                f_ext[i] += s.loads[q][ci] *
-                            s.fe_values.shape_value(s.shape_node[i], q) * JxW;
-            }
-
-          if (!want_hessian)
-            continue;
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            for (unsigned int L = 0; L < dim; ++L)
-              s.gT[L * n_nodes + a] = s.node_grads[a][L];
-          if (n_nodes == (1u << dim))
-            accumulate_hessian<dim, (1u << dim)>(response.A, JxW, s);
-          else
-            accumulate_hessian<dim, 0>(response.A, JxW, s);
-        }
-      if (want_hessian)
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j < dofs_per_cell; ++j)
-            c.matrix(i, j) = s.Kt[s.block_entry[i * dofs_per_cell + j]];
-
-      if (want_gradient)
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            c.rhs(i) = f_ext[i] - f_int[i];
-            c.force_sq += f_int[i] * f_int[i] + f_ext[i] * f_ext[i];
-          }
+      assembler.cell(cell, s, c);
     };
-
     auto boundary_worker =
       [&](const auto &cell, const unsigned int face_no, Scratch<dim> &s, Copy &c) {
-        if (!c.admissible ||
-            !bc.is_traction_boundary(cell->face(face_no)->boundary_id()))
-          return;
-        s.fe_face_values.reinit(cell, face_no);
-        const unsigned int n_q = s.fe_face_values.n_quadrature_points;
-        s.values.resize(n_q);
-        s.fe_face_values[displacement].get_function_values(u, s.values);
-        s.loads.resize(n_q, Vector<double>(dim));
-        traction->vector_value_list(s.fe_face_values.get_quadrature_points(),
-                                   s.loads);
-        std::vector<double> f_ext(dofs_per_cell, 0.);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const double JxW = s.fe_face_values.JxW(q);
-            for (unsigned int d = 0; d < dim; ++d)
-              c.external_work += s.loads[q][d] * s.values[q][d] * JxW;
-            if (want_gradient)
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const unsigned int ci = fe.system_to_component_index(i).first;
-                  f_ext[i] += s.loads[q][ci] *
-                              s.fe_face_values.shape_value(i, q) * JxW;
-                }
-          }
-        if (want_gradient)
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              c.rhs(i) += f_ext[i];
-              c.force_sq += f_ext[i] * f_ext[i];
-            }
+        assembler.traction_face(cell, face_no, s, c);
       };
 
     Evaluation    result;
@@ -500,17 +622,7 @@ namespace Signorini
               Copy(),
               flags,
               boundary_worker);
-
-    const MPI_Comm comm = dof_handler.get_communicator();
-    result.strain_energy = Utilities::MPI::sum(result.strain_energy, comm);
-    result.external_work = Utilities::MPI::sum(result.external_work, comm);
-    result.min_J         = Utilities::MPI::min(result.min_J, comm);
-    result.force_scale   = std::sqrt(Utilities::MPI::sum(force_sq, comm));
-    result.admissible =
-      Utilities::MPI::min(result.admissible ? 1 : 0, comm) == 1;
-    result.value = result.strain_energy - result.external_work;
-    if (!std::isfinite(result.value))
-      result.admissible = false;
+    sum_over_ranks(result, force_sq, dof_handler.get_communicator());
 
     if (rhs)
       rhs->compress(VectorOperation::add);
