@@ -22,7 +22,7 @@ namespace Signorini
     record.contact_area   = summary.area;
     std::vector<std::pair<Point<dim>, double>> pressure;
     if (hertz.active())
-      pressure = contact.pressure_samples(u);
+      pressure = contact.gather_pressure(u, contact.forces());
 
     const char *axes = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
@@ -72,7 +72,7 @@ namespace Signorini
           return hertz.pressure(hertz.distance(x));
         };
       }
-    contact.write_profile_csv(profile_file, u, reference);
+    contact.write_profile(profile_file, u, contact.forces(), reference);
     return quantities;
   }
 

@@ -172,7 +172,9 @@ namespace Signorini
         throw std::logic_error("this contact model has no constraints");
       }
 
-      /// The nodal contact forces of the last converged solve.
+      /// The nodal contact forces of the last converged solve. The output
+      /// functions below take the forces as an argument (these, or a
+      /// failed iterate's): one name per output.
       std::vector<double> &
       forces()
       {
@@ -194,20 +196,6 @@ namespace Signorini
       virtual std::vector<std::pair<Point<dim>, double>>
       gather_pressure(const VectorType &u, const std::vector<double> &forces) const = 0;
 
-      /// The same with the recorded forces.
-      std::vector<std::pair<Point<dim>, double>>
-      pressure_samples(const VectorType &u) const
-      {
-        return gather_pressure(u, nodal_forces);
-      }
-
-      /// The contact pressure at each of this rank's contact nodes.
-      std::vector<double>
-      pressures(const VectorType &u) const
-      {
-        return this->nodal_pressures(u, nodal_forces);
-      }
-
       /// The profile along Gamma_C as CSV (rank 0 writes; collective), for
       /// the nodal @p forces, with a reference pressure where
       /// @p reference is given.
@@ -218,15 +206,6 @@ namespace Signorini
                     const std::function<double(const Point<dim> &)> &reference)
         const = 0;
 
-      /// The same with the recorded forces.
-      void
-      write_profile_csv(const std::string                               &file,
-                        const VectorType                                &u,
-                        const std::function<double(const Point<dim> &)> &reference) const
-      {
-        write_profile(file, u, nodal_forces, reference);
-      }
-
       /// The model's nodal fields (pressure, gap or penetration, active)
       /// for the nodal @p forces; the vectors live in the model until the
       /// next call.
@@ -234,13 +213,6 @@ namespace Signorini
       add_output_fields(DataOut<dim>              &data_out,
                         const VectorType          &u,
                         const std::vector<double> &forces) = 0;
-
-      /// The same with the recorded forces.
-      void
-      add_fields(DataOut<dim> &data_out, const VectorType &u)
-      {
-        add_output_fields(data_out, u, nodal_forces);
-      }
 
       /// The model's part of summary.json's "contact" block.
       virtual void
