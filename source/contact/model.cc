@@ -26,6 +26,38 @@ namespace Signorini
       nodal_forces = std::move(forces);
     }
 
+    template <int dim>
+    void
+    Model<dim>::write_profile(const std::string                               &file,
+                              const VectorType                                &u,
+                              const std::vector<double>                       &forces,
+                              const std::function<double(const Point<dim> &)> &reference) const
+    {
+      // X.., x.., the gaps, pressure, force.., weight[, reference].
+      std::vector<std::vector<double>> rows;
+      for (const NodeSample &sample : node_samples(u, forces))
+        {
+          std::vector<double> row;
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(sample.X[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(sample.x[d]);
+          row.insert(row.end(), sample.gaps.begin(), sample.gaps.end());
+          row.push_back(sample.pressure);
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(sample.force[d]);
+          row.push_back(sample.weight);
+          if (reference)
+            row.push_back(reference(sample.x));
+          rows.push_back(row);
+        }
+      const auto &boundary = this->contact_nodes_on_boundary();
+      boundary.write_csv(file,
+                         BoundaryNodes<dim>::profile_header(profile_gaps() + ",pressure",
+                                                            bool(reference)),
+                         rows);
+    }
+
     template class Model<2>;
     template class Model<3>;
   } // namespace Contact

@@ -220,39 +220,26 @@ namespace Signorini
     }
 
     template <int dim>
-    void
-    RigidFoundation<dim>::write_profile(
-      const std::string                               &file,
-      const VectorType                                &u,
-      const std::vector<double>                       &forces,
-      const std::function<double(const Point<dim> &)> &reference_pressure) const
+    std::vector<typename Model<dim>::NodeSample>
+    RigidFoundation<dim>::node_samples(const VectorType          &u,
+                                       const std::vector<double> &forces) const
     {
-      // One row per node: X, x, gap, penetration/h, pressure, force
-      // vector, tributary weight.
-      std::vector<std::vector<double>> rows;
+      // Gaps: the signed distance g/|grad g| and the penetration over h.
+      std::vector<typename Model<dim>::NodeSample> samples;
       for (unsigned int k = 0; k < contact_nodes().size(); ++k)
         {
           const Node  &n = contact_nodes()[k];
           const State  s = evaluate(n, u);
-          std::vector<double> row;
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(n.X[d]);
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(s.x[d]);
-          row.push_back(s.g / s.grad.norm());
-          row.push_back(s.penetration() / n.h);
-          row.push_back(pressure(n, s, forces[k]));
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(forces[k] * s.grad[d]);
-          row.push_back(n.weight);
-          if (reference_pressure)
-            row.push_back(reference_pressure(s.x));
-          rows.push_back(row);
+          typename Model<dim>::NodeSample sample;
+          sample.X        = n.X;
+          sample.x        = s.x;
+          sample.gaps     = {s.g / s.grad.norm(), s.penetration() / n.h};
+          sample.pressure = pressure(n, s, forces[k]);
+          sample.force    = forces[k] * s.grad;
+          sample.weight   = n.weight;
+          samples.push_back(sample);
         }
-      boundary.write_csv(file,
-                         BoundaryNodes<dim>::profile_header(
-                           "gap,penetration_over_h,pressure", bool(reference_pressure)),
-                         rows);
+      return samples;
     }
 
     template <int dim>

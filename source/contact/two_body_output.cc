@@ -127,6 +127,31 @@ namespace Signorini
     }
 
     template <int dim>
+    std::vector<typename Model<dim>::NodeSample>
+    TwoBodyContact<dim>::node_samples(const VectorType          &u,
+                                      const std::vector<double> &forces) const
+    {
+      const auto          pressures = node_pressures(forces);
+      const auto          x         = node_positions(u);
+      std::vector<double> depths;
+      penetration_ratio(x, current_faces(u), &depths);
+      std::vector<typename Model<dim>::NodeSample> samples;
+      for (unsigned int k = 0; k < nodes().size(); ++k)
+        {
+          typename Model<dim>::NodeSample sample;
+          sample.X        = nodes()[k].X;
+          sample.x        = x[k];
+          sample.gaps     = {depths[k]};
+          sample.pressure = pressures[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            sample.force[d] = forces[k * dim + d];
+          sample.weight = nodes()[k].weight;
+          samples.push_back(sample);
+        }
+      return samples;
+    }
+
+    template <int dim>
     void
     TwoBodyContact<dim>::write_profile(
       const std::string                               &file,
@@ -134,31 +159,7 @@ namespace Signorini
       const std::vector<double>                       &forces,
       const std::function<double(const Point<dim> &)> &reference_pressure) const
     {
-      const auto          pressures = node_pressures(forces);
-      const auto          x         = node_positions(u);
-      std::vector<double> depths;
-      penetration_ratio(x, current_faces(u), &depths);
-      std::vector<std::vector<double>> rows;
-      for (unsigned int k = 0; k < nodes().size(); ++k)
-        {
-          std::vector<double> row;
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(nodes()[k].X[d]);
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(x[k][d]);
-          row.push_back(depths[k]);
-          row.push_back(pressures[k]);
-          for (unsigned int d = 0; d < dim; ++d)
-            row.push_back(forces[k * dim + d]);
-          row.push_back(nodes()[k].weight);
-          if (reference_pressure)
-            row.push_back(reference_pressure(x[k]));
-          rows.push_back(row);
-        }
-      boundary.write_csv(file,
-                         BoundaryNodes<dim>::profile_header("penetration,pressure",
-                                                            bool(reference_pressure)),
-                         rows);
+      Model<dim>::write_profile(file, u, forces, reference_pressure);
       // Body 2's side beside it: NAME_target.csv.
       const auto dot = file.rfind(".csv");
       write_target_profile((dot == std::string::npos ? file : file.substr(0, dot)) +
@@ -280,6 +281,8 @@ namespace Signorini
     template typename PenaltyTerm<3>::Measure TwoBodyContact<3>::measure(const VectorType &u, const std::vector<double> &forces) const;
     template std::vector<std::pair<Point<2>, double>> TwoBodyContact<2>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
     template std::vector<std::pair<Point<3>, double>> TwoBodyContact<3>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
+    template std::vector<typename Model<2>::NodeSample> TwoBodyContact<2>::node_samples(const VectorType &, const std::vector<double> &) const;
+    template std::vector<typename Model<3>::NodeSample> TwoBodyContact<3>::node_samples(const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<2> &)> &reference_pressure) const;
     template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<3> &)> &reference_pressure) const;
     template void TwoBodyContact<2>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;

@@ -196,15 +196,34 @@ namespace Signorini
       virtual std::vector<std::pair<Point<dim>, double>>
       gather_pressure(const VectorType &u, const std::vector<double> &forces) const = 0;
 
+      /// One contact node as the profile shows it.
+      struct NodeSample
+      {
+        Point<dim>          X, x;   // reference and current position
+        std::vector<double> gaps;   // the model's gap measures (profile_gaps())
+        double              pressure = 0.;
+        Tensor<1, dim>      force;  // the nodal contact force
+        double              weight = 0.; // tributary length or area
+      };
+
+      /// This rank's contact nodes for the nodal @p forces at the ghosted
+      /// state @p u, in the order of contact_nodes_on_boundary().
+      virtual std::vector<NodeSample>
+      node_samples(const VectorType &u, const std::vector<double> &forces) const = 0;
+
+      /// The names of NodeSample::gaps, comma-separated (profile columns).
+      virtual std::string
+      profile_gaps() const = 0;
+
       /// The profile along Gamma_C as CSV (rank 0 writes; collective), for
       /// the nodal @p forces, with a reference pressure where
-      /// @p reference is given.
+      /// @p reference is given: one row per node_samples() entry. A model
+      /// may write more beside it (two bodies: body 2's side).
       virtual void
       write_profile(const std::string                               &file,
                     const VectorType                                &u,
                     const std::vector<double>                       &forces,
-                    const std::function<double(const Point<dim> &)> &reference)
-        const = 0;
+                    const std::function<double(const Point<dim> &)> &reference) const;
 
       /// The model's nodal fields (pressure, gap or penetration, active)
       /// for the nodal @p forces; the vectors live in the model until the

@@ -228,18 +228,16 @@ namespace Signorini
       Summary
       summarize(const VectorType &u, const std::vector<double> &forces) const;
 
-      /**
-       * Write the profile along Gamma_2 (rank 0 writes, all ranks call):
-       * reference and current coordinates, gap, pressure, force, and a
-       * reference pressure where @p reference_pressure is given (a
-       * function of the current position), sorted by the reference
-       * coordinates.
-       */
-      void
-      write_profile(const std::string                              &file,
-                    const VectorType                               &u,
-                    const std::vector<double>                      &forces,
-                    const std::function<double(const Point<dim> &)> &reference_pressure) const override;
+      /// The profile's nodes: gaps are the signed distance g/|grad g|
+      /// ("gap") and the penetration over the local mesh size.
+      std::vector<typename Model<dim>::NodeSample>
+      node_samples(const VectorType &u, const std::vector<double> &forces) const override;
+
+      std::string
+      profile_gaps() const override
+      {
+        return "gap,penetration_over_h";
+      }
 
       /**
        * Contact pressure, gap (x_d - psi, signed) and active flag as nodal

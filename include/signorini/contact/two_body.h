@@ -305,6 +305,18 @@ namespace Signorini
       std::vector<std::pair<Point<dim>, double>>
       gather_pressure(const VectorType &u, const std::vector<double> &forces) const override;
 
+      /// The profile's nodes: the one gap is the penetration depth into
+      /// body 2 (>= 0).
+      std::vector<typename Model<dim>::NodeSample>
+      node_samples(const VectorType &u, const std::vector<double> &forces) const override;
+
+      std::string
+      profile_gaps() const override
+      {
+        return "penetration";
+      }
+
+      /// Model's profile, and body 2's side beside it (NAME_target.csv).
       void
       write_profile(const std::string                               &file,
                     const VectorType                                &u,
