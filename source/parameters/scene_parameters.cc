@@ -290,12 +290,23 @@ namespace Signorini
       prm.leave_subsection();
     }
 
+    std::string
+    ContactSection::type() const
+    {
+      return model ? model->name : "none";
+    }
+
+    bool
+    ContactSection::node_wise_constraints() const
+    {
+      return model && model->capabilities.node_wise_constraints;
+    }
+
     void
     ContactSection::parse_parameters(ParameterHandler &prm, const unsigned int dim)
     {
       prm.enter_subsection("Contact");
-      type             = prm.get("Type");
-      model            = Signorini::Contact::find_model(type);
+      model            = Signorini::Contact::find_model(prm.get("Type"));
       model_parameters = model ? model->parse_parameters(prm, dim) : nullptr;
       boundary_id      = prm.get_integer("Contact boundary id");
       prm.enter_subsection("Hertz reference");
@@ -387,7 +398,7 @@ namespace Signorini
       contact.parse_parameters(prm, dim);
       if (contact.active() && bodies.size() < contact.model->capabilities.bodies)
         throw InputError("Contact > Type",
-                         contact.type + " needs Body 2 > Active = true");
+                         contact.type() + " needs Body 2 > Active = true");
       auto &hertz = contact.hertz;
       const std::string hertz_load = std::string("Contact > Hertz reference > ") +
                                      (hertz.point_contact() ? "Point load" : "Line load");

@@ -30,7 +30,7 @@ namespace Signorini
     StepSolver<dim>::setup();
     const auto &problem = this->problem;
     const auto &scene   = this->scene;
-    if (problem.contact && problem.contact->has_constraints())
+    if (this->parameters.contact.node_wise_constraints())
       minimizer.setup(*problem.contact, scene.homogeneous_constraints,
                       scene.dof_handler.get_communicator());
     else

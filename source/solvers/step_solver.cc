@@ -265,7 +265,7 @@ namespace Signorini
     const std::string method  = Parameters::selection_name(m, Parameters::Solver::methods());
     if (m == Method::newton && contact)
       throw InputError("Solver > Method",
-                       "the scene declares contact (Contact > Type = " + p.contact.type +
+                       "the scene declares contact (Contact > Type = " + p.contact.type() +
                          "), which Method = newton cannot handle: use "
                          "newton-penalty");
     if (m == Method::newton_penalty && !contact)
@@ -278,8 +278,8 @@ namespace Signorini
                        "J = 1 constraints need Solver > Method = ipopt or "
                        "interior-point, not " +
                          method);
-    const bool constraints = contact && p.contact.model->capabilities.node_wise_constraints;
-    if (m == Method::interior_point && !constraints && !(incompressible && !contact))
+    if (m == Method::interior_point && !p.contact.node_wise_constraints() &&
+        !(incompressible && !contact))
       {
         std::string with_constraints;
         for (const auto &model : Contact::registered_models())
@@ -289,7 +289,7 @@ namespace Signorini
                          "interior-point handles the node-wise constraints of "
                          "Contact > Type = " +
                            with_constraints + ", and this scene has Contact > Type = " +
-                           p.contact.type + ": use " +
+                           p.contact.type() + ": use " +
                            (contact ? "newton-penalty or ipopt" : "newton"));
       }
     if (m == Method::ipopt && n_ranks > 1)
@@ -321,8 +321,7 @@ namespace Signorini
           // A model without constraints (the indicator function: its
           // constraint Phi = 0 has a zero gradient on the surface) is
           // enforced by penalty stages, each minimised by Ipopt.
-          if (parameters.contact.active() &&
-              !parameters.contact.model->capabilities.node_wise_constraints)
+          if (parameters.contact.active() && !parameters.contact.node_wise_constraints())
             return std::make_unique<PenaltyStep<dim>>(parameters, scene,
                                                       problem, timer, progress,
                                                       true);

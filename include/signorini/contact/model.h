@@ -156,14 +156,8 @@ namespace Signorini
       virtual std::function<double(const Point<dim> &)>
       band_distance() const = 0;
 
-      /// Whether the model has node-wise inequality constraints.
-      virtual bool
-      has_constraints() const
-      {
-        return false;
-      }
-
-      /// Constraint of the node @p node at the ghosted state @p u.
+      /// Constraint of the node @p node at the ghosted state @p u (models
+      /// whose registry entry declares node-wise constraints).
       virtual ConstraintState
       constraint(const BoundaryNode<dim> &node, const VectorType &u) const
       {

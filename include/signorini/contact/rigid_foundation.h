@@ -112,12 +112,6 @@ namespace Signorini
         };
       }
 
-      bool
-      has_constraints() const override
-      {
-        return true;
-      }
-
       State
       constraint(const Node &node, const VectorType &u) const override
       {

@@ -141,12 +141,10 @@ namespace Signorini
     /// reference.
     struct ContactSection
     {
-      /// Type: "none" or a registered model's name.
-      std::string                                        type  = "none";
-      const Signorini::Contact::ModelEntry              *model = nullptr; // none: null
+      const Signorini::Contact::ModelEntry *model = nullptr; // Type = none: null
       std::shared_ptr<const Signorini::Contact::ModelParameters> model_parameters;
-      types::boundary_id                                 boundary_id = 0;
-      Signorini::Contact::HertzReference                 hertz;
+      types::boundary_id                   boundary_id = 0;
+      Signorini::Contact::HertzReference   hertz;
 
       /// Whether the scene declares contact.
       bool
@@ -154,6 +152,15 @@ namespace Signorini
       {
         return model != nullptr;
       }
+
+      /// Type: "none" or the model's registered name.
+      std::string
+      type() const;
+
+      /// Whether the model has node-wise constraints (its capabilities),
+      /// which Ipopt and the interior point method impose.
+      bool
+      node_wise_constraints() const;
 
       static void
       declare_parameters(ParameterHandler &prm);
