@@ -176,20 +176,18 @@ namespace Signorini
   template <int dim>
   void
   InteriorPointIteration<dim>::dual_residual(const std::vector<double> &f,
-                                             VectorType                &out) const
+                                             VectorType                &out)
   {
-    std::vector<types::global_dof_index> node_dofs(dim);
-    Vector<double>                       node_values(dim);
     out = rhs;
     for (unsigned int k = 0; k < n; ++k)
       if (minimizer.active[k])
         {
           for (unsigned int i = 0; i < dim; ++i)
             {
-              node_dofs[i]   = nodes[k].dofs[i];
-              node_values(i) = f[k] * state[k].grad[i];
+              dofs[i]  = nodes[k].dofs[i];
+              local(i) = f[k] * state[k].grad[i];
             }
-          constraints.distribute_local_to_global(node_values, node_dofs, out);
+          constraints.distribute_local_to_global(local, dofs, out);
         }
     out.compress(VectorOperation::add);
   }

@@ -184,7 +184,7 @@ namespace Signorini
     recover(const VectorType &du);
     /// out = -grad E + sum_k f_k grad g_k at the current state.
     void
-    dual_residual(const std::vector<double> &f, VectorType &out) const;
+    dual_residual(const std::vector<double> &f, VectorType &out);
     /// max_i |K_ii| over all ranks.
     double
     largest_diagonal() const;
