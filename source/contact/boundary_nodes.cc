@@ -156,7 +156,7 @@ namespace Signorini
     void
     BoundaryNodes<dim>::add_fields(DataOut<dim>                           &data_out,
                                    const std::vector<std::string>          &names,
-                                   const std::vector<std::vector<double>> &values)
+                                   const std::vector<std::vector<double>> &values) const
     {
       const MPI_Comm  comm     = dof_handler.get_communicator();
       const IndexSet &owned    = scalar_dof_handler.locally_owned_dofs();

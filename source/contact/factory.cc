@@ -28,12 +28,21 @@ namespace Signorini
           throw InputError("Contact > " + key,
                            "boundary id " + std::to_string(id) +
                              " does not exist in the mesh");
+      std::unique_ptr<Model<dim>> model;
       if constexpr (dim == 2)
-        return entry->create_2d(*parameters.model_parameters, parameters.boundary_id,
-                                dof_handler, mapping);
+        model = entry->create_2d(*parameters.model_parameters, parameters.boundary_id,
+                                 dof_handler, mapping);
       else
-        return entry->create_3d(*parameters.model_parameters, parameters.boundary_id,
-                                dof_handler, mapping);
+        model = entry->create_3d(*parameters.model_parameters, parameters.boundary_id,
+                                 dof_handler, mapping);
+      // The solver table reads the capability before any model exists: the
+      // model must keep the entry's promise.
+      AssertThrow(bool(model->node_wise_constraints()) ==
+                    entry->capabilities.node_wise_constraints,
+                  ExcMessage("contact model '" + entry->name +
+                             "': its registry entry and its node_wise_constraints() "
+                             "disagree on whether it has node-wise constraints"));
+      return model;
     }
 
     template std::unique_ptr<Model<2>>

@@ -158,65 +158,12 @@ namespace Signorini
 
     template <int dim>
     double
-    RigidFoundation<dim>::active_threshold(const std::vector<double> &forces) const
+    RigidFoundation<dim>::max_penetration_ratio(const VectorType &u) const
     {
-      double largest = 0.;
-      for (const double f : forces)
-        largest = std::max(largest, f);
-      return 1e-6 * Utilities::MPI::max(largest, dof_handler.get_communicator());
-    }
-
-    template <int dim>
-    typename RigidFoundation<dim>::Summary
-    RigidFoundation<dim>::summarize(const VectorType          &u,
-                                    const std::vector<double> &forces) const
-    {
-      const MPI_Comm comm = dof_handler.get_communicator();
-      Summary        summary;
-      summary.n_nodes        = n_global_nodes();
-      const double threshold = active_threshold(forces);
-      for (unsigned int k = 0; k < contact_nodes().size(); ++k)
-        {
-          const State s = evaluate(contact_nodes()[k], u);
-          summary.max_penetration = std::max(summary.max_penetration, s.penetration());
-          summary.max_penetration_ratio =
-            std::max(summary.max_penetration_ratio, s.penetration() / contact_nodes()[k].h);
-          summary.total_force += forces[k] * s.grad;
-          this->add_moment(summary.moment, s.x, forces[k] * s.grad);
-          if (forces[k] > threshold)
-            {
-              ++summary.n_active;
-              summary.area += contact_nodes()[k].weight;
-              summary.max_pressure =
-                std::max(summary.max_pressure,
-                         pressure(contact_nodes()[k], s, forces[k]));
-            }
-        }
-      summary.n_active        = Utilities::MPI::sum(summary.n_active, comm);
-      summary.max_penetration = Utilities::MPI::max(summary.max_penetration, comm);
-      summary.max_penetration_ratio =
-        Utilities::MPI::max(summary.max_penetration_ratio, comm);
-      summary.max_pressure = Utilities::MPI::max(summary.max_pressure, comm);
-      for (unsigned int d = 0; d < dim; ++d)
-        summary.total_force[d] = Utilities::MPI::sum(summary.total_force[d], comm);
-      this->sum_area_and_moment(summary, comm);
-      return summary;
-    }
-
-    template <int dim>
-    std::vector<std::pair<Point<dim>, double>>
-    RigidFoundation<dim>::gather_pressure(const VectorType          &u,
-                                          const std::vector<double> &forces) const
-    {
-      std::vector<std::pair<Point<dim>, double>> local;
-      const double threshold = active_threshold(forces);
-      for (unsigned int k = 0; k < contact_nodes().size(); ++k)
-        if (forces[k] > threshold)
-          {
-            const State s = evaluate(contact_nodes()[k], u);
-            local.emplace_back(s.x, pressure(contact_nodes()[k], s, forces[k]));
-          }
-      return boundary.gather_sorted(local);
+      double ratio = 0.;
+      for (const Node &node : contact_nodes())
+        ratio = std::max(ratio, evaluate(node, u).penetration() / node.h);
+      return Utilities::MPI::max(ratio, dof_handler.get_communicator());
     }
 
     template <int dim>
@@ -240,27 +187,6 @@ namespace Signorini
           samples.push_back(sample);
         }
       return samples;
-    }
-
-    template <int dim>
-    void
-    RigidFoundation<dim>::add_output_fields(DataOut<dim>              &data_out,
-                                            const VectorType          &u,
-                                            const std::vector<double> &forces)
-    {
-      const double                     threshold = active_threshold(forces);
-      std::vector<std::vector<double>> values(3);
-      for (unsigned int k = 0; k < contact_nodes().size(); ++k)
-        {
-          const Node &n = contact_nodes()[k];
-          const State s = evaluate(n, u);
-          values[0].push_back(pressure(n, s, forces[k]));
-          values[1].push_back(s.g / s.grad.norm());
-          values[2].push_back(forces[k] > threshold ? 1. : 0.);
-        }
-      boundary.add_fields(data_out,
-                          {"contact_pressure", "contact_gap", "contact_active"},
-                          values);
     }
 
     template class RigidFoundation<2>;

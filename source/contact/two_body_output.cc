@@ -18,23 +18,13 @@
 #include <map>
 #include <set>
 
-// TwoBodyContact: what a state with its nodal forces reports (pressures,
-// active set, summary, profile CSV, VTU fields, summary.json block).
+// TwoBodyContact: what a state with its nodal forces reports (node
+// samples, penetration, profile CSV with body 2's side, summary.json block).
 
 namespace Signorini
 {
   namespace Contact
   {
-    template <int dim>
-    double
-    TwoBodyContact<dim>::active_threshold(const std::vector<double> &pressures) const
-    {
-      double largest = 0.;
-      for (const double p : pressures)
-        largest = std::max(largest, p);
-      return 1e-6 * Utilities::MPI::max(largest, dof_handler.get_communicator());
-    }
-
     template <int dim>
     std::vector<double>
     TwoBodyContact<dim>::node_pressures(const std::vector<double> &forces) const
@@ -51,20 +41,12 @@ namespace Signorini
     }
 
     template <int dim>
-    typename TwoBodyContact<dim>::Summary
-    TwoBodyContact<dim>::summarize(const VectorType          &u,
-                                   const std::vector<double> &forces) const
+    typename TwoBodyContact<dim>::PenetrationRatios
+    TwoBodyContact<dim>::penetration_ratios(const VectorType &u) const
     {
       const MPI_Comm comm  = dof_handler.get_communicator();
       const auto     faces = current_faces(u);
-      Summary        s;
-      s.n_nodes = boundary.n_global();
-      // Penetration at the nodes and, for the integral form, at the Gauss
-      // points too (reported); the continuation is steered by the points
-      // the penalty acts on (the Gauss points of the integral form: mu
-      // cannot push out a node between them, e.g. a corner of body 1).
-      std::vector<Point<dim>> x = node_positions(u);
-      double                  gauss_ratio = 0.;
+      double         gauss_ratio = 0.;
       if (prm.integral)
         {
           std::vector<Point<dim>> xg;
@@ -72,35 +54,9 @@ namespace Signorini
             xg.push_back(position(p, u));
           gauss_ratio = penetration_ratio(xg, faces);
         }
-      const double node_ratio = penetration_ratio(x, faces);
-      s.max_penetration_ratio =
-        Utilities::MPI::max(std::max(node_ratio, gauss_ratio), comm);
-      s.max_penalised_penetration_ratio =
-        Utilities::MPI::max(prm.integral ? gauss_ratio : node_ratio, comm);
-      const auto   pressures = node_pressures(forces);
-      const double threshold = active_threshold(pressures);
-      for (unsigned int k = 0; k < nodes().size(); ++k)
-        {
-          Tensor<1, dim> f;
-          for (unsigned int d = 0; d < dim; ++d)
-            f[d] = forces[k * dim + d];
-          s.total_force += f;
-          this->add_moment(s.moment, x[k], f);
-          if (pressures[k] > threshold)
-            {
-              ++s.n_active;
-              s.area += nodes()[k].weight;
-              s.max_pressure = std::max(s.max_pressure, pressures[k]);
-            }
-        }
-      s.n_active     = Utilities::MPI::sum(s.n_active, comm);
-      s.max_pressure = Utilities::MPI::max(s.max_pressure, comm);
-      for (unsigned int d = 0; d < dim; ++d)
-        s.total_force[d] = Utilities::MPI::sum(s.total_force[d], comm);
-      this->sum_area_and_moment(s, comm);
-      s.has_pairs = true;
-      s.pairs     = stats.last_pairs;
-      return s;
+      const double node_ratio = penetration_ratio(node_positions(u), faces);
+      return {Utilities::MPI::max(std::max(node_ratio, gauss_ratio), comm),
+              Utilities::MPI::max(prm.integral ? gauss_ratio : node_ratio, comm)};
     }
 
     template <int dim>
@@ -108,22 +64,7 @@ namespace Signorini
     TwoBodyContact<dim>::measure(const VectorType          &u,
                                  const std::vector<double> &forces) const
     {
-      const Summary s = summarize(u, forces);
-      return {s.max_penalised_penetration_ratio, s.n_active};
-    }
-
-    template <int dim>
-    std::vector<std::pair<Point<dim>, double>>
-    TwoBodyContact<dim>::gather_pressure(const VectorType          &u,
-                                         const std::vector<double> &forces) const
-    {
-      const auto   pressures = node_pressures(forces);
-      const double threshold = active_threshold(pressures);
-      std::vector<std::pair<Point<dim>, double>> local;
-      for (unsigned int k = 0; k < nodes().size(); ++k)
-        if (pressures[k] > threshold)
-          local.emplace_back(position(node_points[k], u), pressures[k]);
-      return boundary.gather_sorted(local);
+      return {penetration_ratios(u).penalised, this->n_active(u, forces)};
     }
 
     template <int dim>
@@ -207,24 +148,6 @@ namespace Signorini
 
     template <int dim>
     void
-    TwoBodyContact<dim>::add_output_fields(DataOut<dim>              &data_out,
-                                           const VectorType          &u,
-                                           const std::vector<double> &forces)
-    {
-      const auto          pressures = node_pressures(forces);
-      std::vector<double> depths;
-      penetration_ratio(node_positions(u), current_faces(u), &depths);
-      const double        threshold = active_threshold(pressures);
-      std::vector<double> active(pressures.size());
-      for (unsigned int k = 0; k < pressures.size(); ++k)
-        active[k] = (pressures[k] > threshold ? 1. : 0.);
-      boundary.add_fields(data_out,
-                          {"contact_pressure", "contact_penetration", "contact_active"},
-                          {pressures, depths, active});
-    }
-
-    template <int dim>
-    void
     TwoBodyContact<dim>::check_initial_state(const VectorType &u) const
     {
       if (!admissible(u))
@@ -271,24 +194,18 @@ namespace Signorini
     }
 
     // Instantiations of the member functions defined in this file.
-    template double TwoBodyContact<2>::active_threshold(const std::vector<double> &pressures) const;
-    template double TwoBodyContact<3>::active_threshold(const std::vector<double> &pressures) const;
     template std::vector<double> TwoBodyContact<2>::node_pressures(const std::vector<double> &forces) const;
     template std::vector<double> TwoBodyContact<3>::node_pressures(const std::vector<double> &forces) const;
-    template typename TwoBodyContact<2>::Summary TwoBodyContact<2>::summarize(const VectorType &u, const std::vector<double> &forces) const;
-    template typename TwoBodyContact<3>::Summary TwoBodyContact<3>::summarize(const VectorType &u, const std::vector<double> &forces) const;
+    template typename TwoBodyContact<2>::PenetrationRatios TwoBodyContact<2>::penetration_ratios(const VectorType &) const;
+    template typename TwoBodyContact<3>::PenetrationRatios TwoBodyContact<3>::penetration_ratios(const VectorType &) const;
     template typename PenaltyTerm<2>::Measure TwoBodyContact<2>::measure(const VectorType &u, const std::vector<double> &forces) const;
     template typename PenaltyTerm<3>::Measure TwoBodyContact<3>::measure(const VectorType &u, const std::vector<double> &forces) const;
-    template std::vector<std::pair<Point<2>, double>> TwoBodyContact<2>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
-    template std::vector<std::pair<Point<3>, double>> TwoBodyContact<3>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
     template std::vector<typename Model<2>::NodeSample> TwoBodyContact<2>::node_samples(const VectorType &, const std::vector<double> &) const;
     template std::vector<typename Model<3>::NodeSample> TwoBodyContact<3>::node_samples(const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<2> &)> &reference_pressure) const;
     template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<3> &)> &reference_pressure) const;
     template void TwoBodyContact<2>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<3>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
-    template void TwoBodyContact<2>::add_output_fields(DataOut<2> &data_out, const VectorType &u, const std::vector<double> &forces);
-    template void TwoBodyContact<3>::add_output_fields(DataOut<3> &data_out, const VectorType &u, const std::vector<double> &forces);
     template void TwoBodyContact<2>::check_initial_state(const VectorType &u) const;
     template void TwoBodyContact<3>::check_initial_state(const VectorType &u) const;
     template <int dim>

@@ -192,13 +192,13 @@ namespace Signorini
 
   template <int dim>
   void
-  InteriorPointMinimizer<dim>::setup(const Contact::Model<dim>       &model,
+  InteriorPointMinimizer<dim>::setup(const Contact::NodeWiseConstraints<dim> &node_constraints,
                                      const AffineConstraints<double> &constraints,
                                      const MPI_Comm                   communicator)
   {
-    contact          = &model;
+    contact          = &node_constraints;
     configured       = true;
-    const auto &list = model.contact_nodes_on_boundary().nodes();
+    const auto &list = node_constraints.contact_nodes_on_boundary().nodes();
     active.assign(list.size(), false);
     unsigned int count = 0;
     for (unsigned int k = 0; k < list.size(); ++k)

@@ -13,7 +13,7 @@ namespace Signorini
   {
     template <int dim>
     const std::vector<Contact::BoundaryNode<dim>> &
-    constraint_nodes(const Contact::Model<dim> *contact)
+    constraint_nodes(const Contact::NodeWiseConstraints<dim> *contact)
     {
       static const std::vector<Contact::BoundaryNode<dim>> no_nodes;
       return contact ? contact->contact_nodes_on_boundary().nodes() : no_nodes;

@@ -30,8 +30,9 @@ namespace Signorini
     StepSolver<dim>::setup();
     const auto &problem = this->problem;
     const auto &scene   = this->scene;
-    if (this->parameters.contact.node_wise_constraints())
-      minimizer.setup(*problem.contact, scene.homogeneous_constraints,
+    if (const auto *constraints =
+          problem.contact ? problem.contact->node_wise_constraints() : nullptr)
+      minimizer.setup(*constraints, scene.homogeneous_constraints,
                       scene.dof_handler.get_communicator());
     else
       {

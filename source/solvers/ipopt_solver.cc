@@ -526,7 +526,7 @@ namespace Signorini
   IpoptSolver<dim>::IpoptSolver(const Parameters                    &parameters,
                                 const DoFHandler<dim>               &dof_handler,
                                 const EnergyFunctional<dim>         &energy,
-                                const Contact::Model<dim>           *contact,
+                                const Contact::NodeWiseConstraints<dim> *contact,
                                 const Incompressibility<dim>        *incompressibility,
                                 const std::string                   &output_directory,
                                 ConditionalOStream                  &progress,

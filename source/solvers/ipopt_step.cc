@@ -12,7 +12,7 @@ namespace Signorini
     StepSolver<dim>::setup();
     this->without_transport("Solver > Method = ipopt (not tried with sliding)");
     const auto *contact = this->problem.contact.get();
-    ipopt = this->make_ipopt(this->parameters.contact.node_wise_constraints() ? contact : nullptr,
+    ipopt = this->make_ipopt(contact ? contact->node_wise_constraints() : nullptr,
                              this->problem.incompressibility.get());
   }
 

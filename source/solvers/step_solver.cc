@@ -197,7 +197,7 @@ namespace Signorini
 
   template <int dim>
   std::unique_ptr<IpoptSolver<dim>>
-  StepSolver<dim>::make_ipopt(const Contact::Model<dim>    *contact,
+  StepSolver<dim>::make_ipopt(const Contact::NodeWiseConstraints<dim> *contact,
                               const Incompressibility<dim> *incompressibility) const
   {
     auto ipopt = std::make_unique<IpoptSolver<dim>>(parameters.solver.ipopt,

@@ -91,7 +91,14 @@ namespace Signorini
       void
       add_fields(DataOut<dim>                           &data_out,
                  const std::vector<std::string>          &names,
-                 const std::vector<std::vector<double>> &values);
+                 const std::vector<std::vector<double>> &values) const;
+
+      /// The communicator of the mesh the nodes live on.
+      MPI_Comm
+      get_communicator() const
+      {
+        return dof_handler.get_communicator();
+      }
 
       /**
        * A nodal field (one value per owned node) as a ghosted vector on
@@ -141,7 +148,9 @@ namespace Signorini
       std::unique_ptr<FE_Q<dim>> scalar_fe;
       DoFHandler<dim>            scalar_dof_handler;
       AffineConstraints<double>  scalar_hanging;
-      std::vector<VectorType>    fields;
+      /// The last add_fields() call's vectors, which DataOut reads when it
+      /// builds patches: a cache of the output, not state.
+      mutable std::vector<VectorType> fields;
     };
   } // namespace Contact
 } // namespace Signorini

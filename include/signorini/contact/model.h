@@ -2,6 +2,7 @@
 
 #include <signorini/archive.h>
 #include <signorini/contact/boundary_nodes.h>
+#include <signorini/contact/node_wise_constraints.h>
 #include <signorini/contact/penalty.h>
 #include <signorini/output/json.h>
 #include <signorini/types.h>
@@ -15,6 +16,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,20 +30,25 @@ namespace Signorini
      * A contact model: everything the driver, the step solvers and the
      * output need of one, so that none of them names a concrete model.
      *
-     * - Enforcement: the penalty term mu P(U) of PenaltyTerm (every model)
-     *   and, for models that have them, node-wise inequality constraints
-     *   g_k(U) >= 0 (a constrained solver such as Ipopt uses them).
+     * - Enforcement, in two roles that the solvers see separately: the
+     *   penalty term mu P(U) of PenaltyTerm (every model) with its line
+     *   search safeguards, and, for models that have them, the node-wise
+     *   inequality constraints g_k(U) >= 0 of NodeWiseConstraints
+     *   (node_wise_constraints(): what Ipopt and the interior point
+     *   method take).
      * - Geometry: its nodes on Gamma_C, their mesh sizes, the couplings it
      *   adds to the Hessian's sparsity pattern and the distance that the
      *   band refinement of the potential contact zone uses.
      * - State: the nodal contact forces of the last solve, owned here (their
      *   layout is the model's: one number per node for a rigid foundation,
-     *   dim for two bodies), and what follows from them: pressures, the
-     *   active set, the total force, the profile CSV, the VTU fields and
-     *   the model's block of summary.json.
+     *   dim for two bodies). The model turns a state and forces into one
+     *   NodeSample per node (position, gaps, pressure, force, weight); the
+     *   pressures, the active set, the resultants, the area, the profile
+     *   CSV and the VTU fields are all computed here from those samples.
+     *   The model adds its own entries to summary.json's contact block.
      *
-     * A new model is a class derived from this one plus a case in
-     * create_model() (contact/factory.h).
+     * A new model is a class derived from this one plus one registration
+     * line (contact/registry.h, doc/architecture.md).
      */
     template <int dim>
     class Model : public PenaltyTerm<dim>
@@ -63,23 +70,6 @@ namespace Signorini
         Tensor<1, 3>   moment;
         bool           has_pairs = false;          // a broad phase exists
         unsigned long long pairs = 0;               // pairs evaluated last
-      };
-
-      /// One node-wise constraint g_k(U) >= 0 at a state: the current
-      /// position of the node, g and its derivatives in the node's
-      /// dim x dim block.
-      struct ConstraintState
-      {
-        Point<dim>     x;
-        double         g = 0.;
-        Tensor<1, dim> grad;
-        Tensor<2, dim> hess;
-        /// Geometric penetration depth (>= 0), first order: <-g>/|grad g|.
-        double
-        penetration() const
-        {
-          return std::max(-g, 0.) / grad.norm();
-        }
       };
 
       /// "rigid foundation", "two bodies": the summary's contact type.
@@ -156,14 +146,12 @@ namespace Signorini
       virtual std::function<double(const Point<dim> &)>
       band_distance() const = 0;
 
-      /// Constraint of the node @p node at the ghosted state @p u (models
-      /// whose registry entry declares node-wise constraints).
-      virtual ConstraintState
-      constraint(const BoundaryNode<dim> &node, const VectorType &u) const
+      /// The model's node-wise constraints, if its registry entry declares
+      /// them (Capabilities::node_wise_constraints), else none.
+      virtual const NodeWiseConstraints<dim> *
+      node_wise_constraints() const
       {
-        (void)node;
-        (void)u;
-        throw std::logic_error("this contact model has no constraints");
+        return nullptr;
       }
 
       /// The nodal contact forces of the last converged solve. The output
@@ -180,17 +168,9 @@ namespace Signorini
         return nodal_forces;
       }
 
-      /// Active set, penetration and total force of the ghosted state @p u
-      /// with the recorded forces (collective).
-      virtual StateSummary
-      summarize_state(const VectorType &u) const = 0;
-
-      /// (current position, pressure) of the nodes with a force in
-      /// @p forces, on every rank, sorted by position (collective).
-      virtual std::vector<std::pair<Point<dim>, double>>
-      gather_pressure(const VectorType &u, const std::vector<double> &forces) const = 0;
-
-      /// One contact node as the profile shows it.
+      /// One contact node as the output sees it: the model's whole
+      /// contribution to the profile, the VTU fields, the pressures, the
+      /// active set, the resultants and the summary block.
       struct NodeSample
       {
         Point<dim>          X, x;   // reference and current position
@@ -205,9 +185,44 @@ namespace Signorini
       virtual std::vector<NodeSample>
       node_samples(const VectorType &u, const std::vector<double> &forces) const = 0;
 
-      /// The names of NodeSample::gaps, comma-separated (profile columns).
+      /// The names of NodeSample::gaps, comma-separated (profile columns;
+      /// the first one is also the VTU field contact_NAME).
       virtual std::string
       profile_gaps() const = 0;
+
+      /**
+       * Largest penetration over the local mesh size at the ghosted state
+       * @p u, of every point the model reports (collective): the nodes,
+       * and for a model that penalises other points those too.
+       */
+      virtual double
+      max_penetration_ratio(const VectorType &u) const = 0;
+
+      /// Pairs the broad phase evaluated last, for a model that has one.
+      virtual std::optional<unsigned long long>
+      evaluated_pairs() const
+      {
+        return std::nullopt;
+      }
+
+      /**
+       * Active set, penetration, total force, moment, area and largest
+       * pressure of the ghosted state @p u with the recorded forces, from
+       * node_samples() (collective). A node is active when its pressure
+       * exceeds 1e-6 of the largest on any rank.
+       */
+      StateSummary
+      summarize_state(const VectorType &u) const;
+
+      /// The number of active nodes (as summarize_state() counts them) for
+      /// the nodal @p forces at @p u, on all ranks (collective).
+      unsigned int
+      n_active(const VectorType &u, const std::vector<double> &forces) const;
+
+      /// (current position, pressure) of the active nodes for @p forces,
+      /// on every rank, sorted by position (collective).
+      std::vector<std::pair<Point<dim>, double>>
+      gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
 
       /// The profile along Gamma_C as CSV (rank 0 writes; collective), for
       /// the nodal @p forces, with a reference pressure where
@@ -219,13 +234,13 @@ namespace Signorini
                     const std::vector<double>                       &forces,
                     const std::function<double(const Point<dim> &)> &reference) const;
 
-      /// The model's nodal fields (pressure, gap or penetration, active)
-      /// for the nodal @p forces; the vectors live in the model until the
-      /// next call.
-      virtual void
+      /// The nodal fields contact_pressure, contact_GAP (the first of
+      /// profile_gaps()) and contact_active for the nodal @p forces; the
+      /// vectors live with the contact nodes until the next call.
+      void
       add_output_fields(DataOut<dim>              &data_out,
                         const VectorType          &u,
-                        const std::vector<double> &forces) = 0;
+                        const std::vector<double> &forces) const;
 
       /// The model's part of summary.json's "contact" block.
       virtual void
@@ -243,27 +258,6 @@ namespace Signorini
       load_state(InputArchive &archive);
 
     protected:
-      /// Add the moment x x f (about the origin) of the force @p f at @p x
-      /// to @p moment (2D: the z component only).
-      static void
-      add_moment(Tensor<1, 3> &moment, const Point<dim> &x, const Tensor<1, dim> &f)
-      {
-        if constexpr (dim == 2)
-          moment[2] += x[0] * f[1] - x[1] * f[0];
-        else
-          for (unsigned int i = 0; i < 3; ++i)
-            moment[i] += x[(i + 1) % 3] * f[(i + 2) % dim] - x[(i + 2) % 3] * f[(i + 1) % dim];
-      }
-
-      /// Sum the area and moment of @p s over the ranks.
-      static void
-      sum_area_and_moment(StateSummary &s, const MPI_Comm comm)
-      {
-        s.area = Utilities::MPI::sum(s.area, comm);
-        for (unsigned int i = 0; i < 3; ++i)
-          s.moment[i] = Utilities::MPI::sum(s.moment[i], comm);
-      }
-
       /// The block's entries every model has: type, boundary id, what the
       /// contact is with (under @p with_key), nodes and mesh sizes.
       void

@@ -48,19 +48,19 @@ namespace Signorini
      * active set, total force, the CSV profile and the Hertz quantities.
      */
     template <int dim>
-    class RigidFoundation : public Model<dim>
+    class RigidFoundation : public Model<dim>, public NodeWiseConstraints<dim>
     {
     public:
       using Node = BoundaryNode<dim>;
 
-      using State = typename Model<dim>::ConstraintState;
+      using State = typename NodeWiseConstraints<dim>::State;
 
-      /// Summary of a contact state for summary.json and the screen
-      /// (total_force: of the foundation on the body).
-      struct Summary : Model<dim>::StateSummary
+      /// The model is its own constraint role.
+      const NodeWiseConstraints<dim> *
+      node_wise_constraints() const override
       {
-        double max_penetration = 0.;
-      };
+        return this;
+      }
 
       RigidFoundation(std::unique_ptr<Foundation<dim>> foundation,
                       const types::boundary_id          boundary_id,
@@ -116,12 +116,6 @@ namespace Signorini
       constraint(const Node &node, const VectorType &u) const override
       {
         return evaluate(node, u);
-      }
-
-      typename Model<dim>::StateSummary
-      summarize_state(const VectorType &u) const override
-      {
-        return summarize(u, this->nodal_forces);
       }
 
       void
@@ -191,9 +185,12 @@ namespace Signorini
       typename PenaltyTerm<dim>::Measure
       measure(const VectorType &u, const std::vector<double> &forces) const override
       {
-        const Summary s = summarize(u, forces);
-        return {s.max_penetration_ratio, s.n_active};
+        return {max_penetration_ratio(u), this->n_active(u, forces)};
       }
+
+      /// Largest <-g_k>/|grad g_k| / h_k over the nodes (collective).
+      double
+      max_penetration_ratio(const VectorType &u) const override;
 
       types::boundary_id
       contact_boundary_id() const override
@@ -217,11 +214,6 @@ namespace Signorini
         return p;
       }
 
-      /// Penetration and forces of the state @p u with nodal forces
-      /// @p forces (one per owned node).
-      Summary
-      summarize(const VectorType &u, const std::vector<double> &forces) const;
-
       /// The profile's nodes: gaps are the signed distance g/|grad g|
       /// ("gap") and the penetration over the local mesh size.
       std::vector<typename Model<dim>::NodeSample>
@@ -233,23 +225,6 @@ namespace Signorini
         return "gap,penetration_over_h";
       }
 
-      /**
-       * Contact pressure, gap (x_d - psi, signed) and active flag as nodal
-       * fields for DataOut; the vectors live in this object until the next
-       * call.
-       */
-      void
-      add_output_fields(DataOut<dim>              &data_out,
-                        const VectorType          &u,
-                        const std::vector<double> &forces) override;
-
-      /**
-       * Pressure samples (current position, pressure) of all nodes with a
-       * positive force, gathered on every rank and sorted by position.
-       */
-      std::vector<std::pair<Point<dim>, double>>
-      gather_pressure(const VectorType &u, const std::vector<double> &forces) const override;
-
     private:
       /// Pressure of @p node in state @p s carrying the force @p force
       /// along grad g: force |grad g| / w_k.
@@ -258,11 +233,6 @@ namespace Signorini
       {
         return force * s.grad.norm() / node.weight;
       }
-
-      /// A node is active if its force exceeds 1e-6 of the largest one
-      /// (Ipopt leaves multipliers of order mu / gap on free nodes).
-      double
-      active_threshold(const std::vector<double> &forces) const;
 
       const std::vector<Node> &
       contact_nodes() const

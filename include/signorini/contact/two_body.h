@@ -96,13 +96,6 @@ namespace Signorini
         unsigned int       pattern_builds     = 0;
       };
 
-      /// total_force: of body 2 on body 1; the penetration ratio over
-      /// the nodes and Gauss points.
-      struct Summary : Model<dim>::StateSummary
-      {
-        double max_penalised_penetration_ratio = 0.; // points penalised
-      };
-
       TwoBodyContact(const TwoBodyParameters &parameters,
                      const types::boundary_id contact_boundary,
                      const DoFHandler<dim>   &dof_handler,
@@ -162,10 +155,17 @@ namespace Signorini
       std::function<double(const Point<dim> &)>
       band_distance() const override;
 
-      typename Model<dim>::StateSummary
-      summarize_state(const VectorType &u) const override
+      /// Over the nodes and, for the integral form, the Gauss points.
+      double
+      max_penetration_ratio(const VectorType &u) const override
       {
-        return summarize(u, this->nodal_forces);
+        return penetration_ratios(u).all;
+      }
+
+      std::optional<unsigned long long>
+      evaluated_pairs() const override
+      {
+        return stats.last_pairs;
       }
 
       /// Form, indicator shape and broad-phase statistics.
@@ -297,14 +297,6 @@ namespace Signorini
         return stats;
       }
 
-      Summary
-      summarize(const VectorType &u, const std::vector<double> &forces) const;
-
-      /// (current position, pressure) of the nodes with a force, on every
-      /// rank, sorted by position.
-      std::vector<std::pair<Point<dim>, double>>
-      gather_pressure(const VectorType &u, const std::vector<double> &forces) const override;
-
       /// The profile's nodes: the one gap is the penetration depth into
       /// body 2 (>= 0).
       std::vector<typename Model<dim>::NodeSample>
@@ -322,12 +314,6 @@ namespace Signorini
                     const VectorType                                &u,
                     const std::vector<double>                       &forces,
                     const std::function<double(const Point<dim> &)> &reference_pressure) const override;
-
-      /// contact_pressure, contact_penetration and contact_active fields.
-      void
-      add_output_fields(DataOut<dim>              &data_out,
-                        const VectorType          &u,
-                        const std::vector<double> &forces) override;
 
     private:
       static constexpr unsigned int n_face_vertices =
@@ -412,10 +398,6 @@ namespace Signorini
       FaceTree
       face_tree(const std::vector<IndicatorFace<dim>> &faces, const double margin) const;
 
-      /// A node is active if its pressure exceeds 1e-6 of the largest.
-      double
-      active_threshold(const std::vector<double> &pressures) const;
-
       /// Current face geometry of every body 2 face (collective).
       std::vector<IndicatorFace<dim>>
       current_faces(const VectorType &u) const;
@@ -429,6 +411,18 @@ namespace Signorini
                  const std::vector<IndicatorFace<dim>> &faces,
                  const double                          margin,
                  const bool                            positive_only) const;
+
+      /// Largest penetration over face size (all ranks) of every point
+      /// reported (all) and of the points the penalty acts on (penalised:
+      /// the nodes of the nodal form, the Gauss points of the integral
+      /// form: mu cannot push out a node between them, e.g. a corner of
+      /// body 1).
+      struct PenetrationRatios
+      {
+        double all = 0., penalised = 0.;
+      };
+      PenetrationRatios
+      penetration_ratios(const VectorType &u) const;
 
       /// Largest penetration over face size of the points @p x.
       double

@@ -3,7 +3,7 @@
 #include <signorini/solvers/interior_point_parameters.h>
 
 #include <signorini/archive.h>
-#include <signorini/contact/model.h>
+#include <signorini/contact/node_wise_constraints.h>
 #include <signorini/problem/objective.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/solvers/newton.h>
@@ -96,7 +96,7 @@ namespace Signorini
      * Forgets the warm-start data.
      */
     void
-    setup(const Contact::Model<dim>       &contact,
+    setup(const Contact::NodeWiseConstraints<dim> &contact,
           const AffineConstraints<double> &constraints,
           const MPI_Comm                   communicator);
 
@@ -169,7 +169,7 @@ namespace Signorini
     double              step_limit      = 0.;
     double              increment_limit = 0.;
 
-    const Contact::Model<dim> *contact = nullptr;
+    const Contact::NodeWiseConstraints<dim> *contact = nullptr;
     bool                       configured = false;
     double                     h_without_constraints = 0.;
     std::vector<bool>          active; // the node carries a constraint

@@ -43,7 +43,7 @@ namespace Signorini
   public:
     using Minimizer  = InteriorPointMinimizer<dim>;
     using Statistics = typename Minimizer::Statistics;
-    using State      = typename Contact::Model<dim>::ConstraintState;
+    using State      = typename Contact::NodeWiseConstraints<dim>::State;
 
     /// The residuals of an iterate, over all ranks.
     struct Residuals
@@ -160,6 +160,21 @@ namespace Signorini
     length_scale() const
     {
       return h;
+    }
+
+    /// The iterate and the last step, read-only (for the phase tests):
+    /// slacks, multipliers, their steps, the displacement step, the
+    /// barrier of the step and the accepted step lengths.
+    struct View
+    {
+      const std::vector<double> &s, &z, &ds, &dz;
+      const VectorType          &du;
+      double                     mu, alpha, alpha_z;
+    };
+    View
+    view() const
+    {
+      return {s, z, ds, dz, d, mu, alpha, alpha_z};
     }
 
     /// The largest alpha <= 1 with x + alpha dx >= (1 - tau) x over the

@@ -5,7 +5,7 @@
 #include <signorini/archive.h>
 
 #include <signorini/contact/penalty.h>
-#include <signorini/contact/model.h>
+#include <signorini/contact/node_wise_constraints.h>
 #include <signorini/problem/energy_functional.h>
 #include <signorini/problem/incompressibility.h>
 #include <signorini/types.h>
@@ -82,7 +82,7 @@ namespace Signorini
     IpoptSolver(const Parameters                  &parameters,
                 const DoFHandler<dim>             &dof_handler,
                 const EnergyFunctional<dim>       &energy,
-                const Contact::Model<dim>           *contact,
+                const Contact::NodeWiseConstraints<dim> *contact,
                 const Incompressibility<dim>      *incompressibility,
                 const std::string                 &output_directory,
                 ConditionalOStream                &progress,
@@ -164,7 +164,7 @@ namespace Signorini
     Parameters                           parameters;
     const DoFHandler<dim>               &dof_handler;
     const EnergyFunctional<dim>         &energy;
-    const Contact::Model<dim>           *contact;
+    const Contact::NodeWiseConstraints<dim> *contact;
     const Incompressibility<dim>        *incompressibility;
     Contact::PenaltyTerm<dim>           *penalty = nullptr;
     PatternBuilder                       rebuild_pattern;

@@ -153,7 +153,7 @@ namespace Signorini
      * null).
      */
     std::unique_ptr<IpoptSolver<dim>>
-    make_ipopt(const Contact::Model<dim>    *contact,
+    make_ipopt(const Contact::NodeWiseConstraints<dim> *contact,
                const Incompressibility<dim> *incompressibility) const;
 
     const Parameters::Scene &parameters;
