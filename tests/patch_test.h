@@ -27,10 +27,11 @@ patch_test(std::ostream      &out,
            const std::string &scene,
            const std::string &edits,
            const unsigned int dim,
-           const double       goal)
+           const double       goal,
+           const std::string &launcher = "")
 {
   const double p      = 0.01;
-  const int    status = RunOutput::run_scene(name, scene, edits);
+  const int    status = RunOutput::run_scene(name, scene, edits, launcher);
   out << name << ": exit code 0: " << RunOutput::verdict(status == 0) << "\n";
   const auto profile = RunOutput::read_csv(name + "/contact_profile.csv");
   const auto steps   = RunOutput::read_csv(name + "/load_steps.csv");

@@ -1,5 +1,6 @@
 #include <signorini/contact/registry.h>
 #include <signorini/contact/two_body.h>
+#include <signorini/contact/two_pass.h>
 #include <signorini/input_error.h>
 
 #include <deal.II/base/geometry_info.h>
@@ -168,6 +169,18 @@ namespace Signorini
                         "projected for a Newton step whose exact Hessian "
                         "gives no descent direction. The gradient is exact "
                         "in every mode, so the solution is the same.");
+      prm.declare_entry("Passes",
+                        "one-pass",
+                        Patterns::Selection("one-pass|two-pass"),
+                        "one-pass: only body 1's contact boundary is kept "
+                        "out of body 2 (the poster's evaluation): body 2 "
+                        "receives the contact force as point loads at body "
+                        "1's nodes, which fails the contact patch test with "
+                        "the nodal form. two-pass: body 2's target boundary "
+                        "is also kept out of body 1, through body 1's "
+                        "indicator function on its contact boundary, in the "
+                        "same form; each pass carries half of mu, so that mu "
+                        "keeps its meaning (doc/two_bodies.md).");
     }
 
     void
@@ -184,6 +197,7 @@ namespace Signorini
       shape           = (prm.get("Indicator shape") == "partition" ?
                            IndicatorShape::partition :
                            IndicatorShape::simplex);
+      passes = (prm.get("Passes") == "two-pass" ? 2 : 1);
       const std::string hessian = prm.get("Hessian");
       hessian_mode = (hessian == "exact"     ? HessianMode::exact :
                       hessian == "projected" ? HessianMode::projected :
@@ -727,9 +741,12 @@ namespace Signorini
             {
               for (unsigned int j = 0; j < n1; ++j)
                 force_vector(p.dofs[j]) += -scale * fac[j] * g(var[j]);
-              // The reaction on body 2's vertices.
+              // The reaction on body 2's vertices; lumped, the share of the
+              // opposite face's vertices goes to the face's own (the vertex
+              // of the same position in the face).
               for (unsigned int j = 0; j < n_target_dofs; ++j)
-                force_vector(faces2[pair.second].dofs[j]) += -scale * g(dim + j);
+                force_vector(faces2[pair.second].dofs[lumped_reaction ? j % (n_target_dofs / 2) : j]) +=
+                  -scale * g(dim + j);
             }
           if (!rhs && !hessian)
             continue;
@@ -819,8 +836,12 @@ namespace Signorini
                           const auto              &dof_handler,
                           const auto              &mapping) {
         constexpr int dim = std::decay_t<decltype(dof_handler)>::dimension;
-        return std::unique_ptr<Model<dim>>(std::make_unique<TwoBodyContact<dim>>(
-          parsed<TwoBodyParameters>(parameters), boundary_id, dof_handler, mapping));
+        const auto   &prm = parsed<TwoBodyParameters>(parameters);
+        if (prm.passes == 2)
+          return std::unique_ptr<Model<dim>>(
+            std::make_unique<TwoPassContact<dim>>(prm, boundary_id, dof_handler, mapping));
+        return std::unique_ptr<Model<dim>>(
+          std::make_unique<TwoBodyContact<dim>>(prm, boundary_id, dof_handler, mapping));
       });
       return entry;
     }

@@ -291,6 +291,28 @@ namespace Signorini
       {
         return prm;
       }
+      /**
+       * Record the reaction of each pair on the opposite face's vertices of
+       * the target face (the apex of its indicator term, inside body 2) on
+       * the face's own vertices, so that the target nodes' part of the
+       * force record holds the whole reaction (its resultant is exact).
+       * Only the record (pressures, profiles, resultants) changes, not the
+       * penalty's gradient or Hessian. Off by default: the one-pass
+       * outputs report the reaction on the target nodes alone.
+       */
+      void
+      set_lumped_reaction(const bool on)
+      {
+        lumped_reaction = on;
+      }
+
+      /// Body 2's nodes on the target boundary (this rank's): the second
+      /// part of the force record.
+      const BoundaryNodes<dim> &
+      target_nodes() const
+      {
+        return target;
+      }
       const PairStatistics &
       pair_statistics() const
       {
@@ -466,6 +488,7 @@ namespace Signorini
       std::set<std::pair<unsigned int, unsigned int>> pattern;
       mutable PairStatistics                          stats;
       bool                                            convexified = false;
+      bool                                            lumped_reaction = false;
       mutable AffineConstraints<double>               merged;
       /// Body 2's side at the last profile written: the reaction on its
       /// target nodes and their largest pressure (for summary.json).

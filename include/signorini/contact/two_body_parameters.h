@@ -36,6 +36,10 @@ namespace Signorini
         adaptive
       };
       HessianMode hessian_mode = HessianMode::adaptive;
+      /// 'Passes': 1, body 1's contact boundary against body 2's indicator
+      /// (the poster's); 2, also body 2's target boundary against body 1's
+      /// indicator, each pass with half the penalty factor.
+      unsigned int passes = 1;
 
       static void
       declare_parameters(ParameterHandler &prm);
