@@ -3,7 +3,8 @@
 // peak memory excepted) to 1e-10 relative, the same load steps and
 // iterations, and the same load_steps.csv rows, as the run that was never
 // stopped:
-// - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks;
+// - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks,
+//   and in two passes (Passes = two-pass);
 // - Ipopt with the rigid foundation's constraints (warm-started multipliers);
 // - the interior point method (the same, on 1 and 2 ranks), also with
 //   incompressible bodies (the augmented Lagrangian's multipliers);
@@ -105,6 +106,11 @@ main()
   // Penalty continuation with two deformable bodies (checkpoint n: after
   // load step n + 1).
   check_scene(out, "block", "hertz_block.prm", four_steps, {0, 2});
+  // The same in two passes (TwoPassContact: both passes' states).
+  check_scene(out, "two_pass", "hertz_block.prm",
+              four_steps + "subsection Contact\n  subsection Two bodies\n"
+                           "    set Passes = two-pass\n  end\nend\n",
+              {1});
   // Ipopt with constraints, its multipliers warm-started across steps.
   check_scene(out, "ipopt", "default.prm",
               four_steps +
