@@ -1,5 +1,6 @@
 #include <signorini/archive_io.h>
 #include <signorini/contact/two_pass.h>
+#include <signorini/input_error.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -66,7 +67,16 @@ namespace Signorini
     TwoPassContact<dim>::check_initial_state(const VectorType &u) const
     {
       first.check_initial_state(u);
-      second.check_initial_state(u);
+      // The second pass's own message would name the boundaries the other
+      // way round.
+      if (!second.admissible(u))
+        throw InputError("Body 2 > Geometry",
+                         "at the start, a point of body 2's target boundary "
+                         "(Contact > Two bodies > Target boundary id) lies inside "
+                         "body 1 deeper than the layer in which the indicator "
+                         "function of body 1's contact boundary acts (Passes = "
+                         "two-pass): move the bodies apart (a penetration within "
+                         "that layer is allowed)");
     }
 
     template <int dim>
