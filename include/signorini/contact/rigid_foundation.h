@@ -10,7 +10,6 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <array>
 #include <cmath>

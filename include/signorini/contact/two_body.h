@@ -13,7 +13,6 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/rtree.h>
 
 #include <cmath>
