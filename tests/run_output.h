@@ -67,8 +67,10 @@ namespace RunOutput
     std::ifstream     in(summary_file);
     std::stringstream buffer;
     buffer << in.rdbuf();
-    const std::string text  = buffer.str();
-    const auto        block = text.find("\"quantities\"");
+    const std::string text = buffer.str();
+    // The run's own block, the last: each refinement cycle's record before
+    // it has a "quantities" block of its own.
+    const auto block = text.rfind("\"quantities\"");
     const auto        key   = text.find("\"" + name + "\"", block);
     if (block == std::string::npos || key == std::string::npos)
       return std::numeric_limits<double>::quiet_NaN();
@@ -169,6 +171,33 @@ namespace RunOutput
             return false;
           }
     return true;
+  }
+
+  /**
+   * Whether two refinement_cycles.csv tables (read_csv()) hold the same
+   * cycles with the same numbers to @p tolerance relative, wall times
+   * aside. An estimated error ("NAME_estimated_error") is compared
+   * relative to its quantity NAME: the estimate of a quantity that the
+   * load fixes (a resultant) is round-off.
+   */
+  inline bool
+  same_cycles(const std::vector<std::map<std::string, double>> &a,
+              const std::vector<std::map<std::string, double>> &b,
+              const double                                      tolerance)
+  {
+    bool same = a.size() == b.size();
+    for (std::size_t c = 0; same && c < a.size(); ++c)
+      for (const auto &[column, value] : a[c])
+        if (column.find("wall_time") == std::string::npos)
+          {
+            const auto   suffix = column.find("_estimated_error");
+            const double scale  = suffix == std::string::npos ?
+                                    std::abs(value) :
+                                    std::abs(a[c].at(column.substr(0, suffix)));
+            same &= b[c].count(column) > 0 &&
+                    std::abs(b[c].at(column) - value) <= tolerance * scale + 1e-14;
+          }
+    return same;
   }
 
   /// Whether summary.json @p file holds the entry `"key": true`.

@@ -169,6 +169,7 @@ namespace Signorini
       q[2].name          = "contact_nodes_inside_a";
       q[3].name          = p0_from_fit ? "hertz_p0_axis_node" : "hertz_p0_fit";
       q[3].value         = std::numeric_limits<double>::quiet_NaN();
+      q[0].estimable = q[1].estimable = q[3].estimable = true;
       q[4].name          = "hertz_pressure_l2_error";
       q[4].value         = std::numeric_limits<double>::quiet_NaN();
       if (samples.empty())

@@ -479,6 +479,12 @@ namespace Signorini
       bool in_tolerance = true;
       for (const auto &q : report.quantities)
         in_tolerance &= q.within_tolerance();
+      // A target accuracy that the cycles did not reach is a tolerance
+      // the run missed.
+      const bool target_missed =
+        report.target_accuracy > 0. && !report.target_met &&
+        report.status == "converged";
+      in_tolerance &= !target_missed;
 
       if (root && !quiet)
         {
@@ -498,6 +504,28 @@ namespace Signorini
                           << "   relative error " << std::setprecision(3)
                           << q.relative_error()
                           << (q.within_tolerance() ? "" : "   OUTSIDE TOLERANCE");
+              if (q.has_estimate)
+                {
+                  std::cout << "   estimated error " << std::setprecision(2)
+                            << q.estimated_error;
+                  if (q.estimated_error > 0.)
+                    std::cout << " (relative " << q.estimated_relative_error()
+                              << ", order " << q.observed_order << ")";
+                }
+              std::cout << "\n";
+            }
+          if (report.target_accuracy > 0.)
+            {
+              std::cout << "Target accuracy " << report.target_accuracy
+                        << (report.target_met ? " met" : " NOT MET") << " after "
+                        << (report.cycles.empty() ? 0 : report.cycles.size() - 1)
+                        << " refinement cycles";
+              if (!report.target_unmet.empty())
+                {
+                  std::cout << "; above it:";
+                  for (const auto &name : report.target_unmet)
+                    std::cout << " " << name;
+                }
               std::cout << "\n";
             }
           std::cout << "Summary: " << report.output_directory << "/summary.json"

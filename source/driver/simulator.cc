@@ -6,6 +6,7 @@
 #include <signorini/interruption.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/contact_report.h>
+#include <signorini/output/error_estimate.h>
 #include <signorini/output/summary.h>
 #include <signorini/scene/refinement.h>
 
@@ -334,6 +335,7 @@ namespace Signorini
       c.quantities        = report.quantities;
       c.timing            = phase_times();
       report.cycles.push_back(c);
+      estimate_errors();
     };
     if (report.cycles.empty())
       {
@@ -347,6 +349,12 @@ namespace Signorini
       }
     for (unsigned int cycle = report.cycles.size(); cycle <= n_cycles; ++cycle)
       {
+        if (report.target_met)
+          {
+            pcout << "Target accuracy " << report.target_accuracy
+                  << " met after refinement cycle " << cycle - 1 << std::endl;
+            break;
+          }
         activity = "refinement cycle " + std::to_string(cycle);
         Interruption::throw_if_requested(comm);
         Timer cycle_timer;
@@ -408,6 +416,58 @@ namespace Signorini
           write_progress(report.output_directory, "running", time, end_time,
                          step, cycle, spent, 0.);
       }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::estimate_errors()
+  {
+    std::vector<double>                h;
+    std::vector<std::vector<Quantity>> per_mesh;
+    for (const auto &c : report.cycles)
+      {
+        h.push_back(c.h_min);
+        per_mesh.push_back(c.quantities);
+      }
+    ErrorEstimate::add_estimates(h, per_mesh, report.quantities);
+    if (!report.cycles.empty())
+      report.cycles.back().quantities = report.quantities;
+
+    const auto &refinement = parameters.refinement;
+    report.target_accuracy = refinement.target_accuracy;
+    if (refinement.target_accuracy <= 0.)
+      return;
+    std::vector<std::string> names = refinement.target_quantities;
+    if (names.empty())
+      for (const auto &q : report.quantities)
+        if (q.estimable)
+          names.push_back(q.name);
+    report.target_unmet.clear();
+    for (const auto &name : names)
+      {
+        const auto q = std::find_if(report.quantities.begin(),
+                                    report.quantities.end(),
+                                    [&](const Quantity &q) { return q.name == name; });
+        if (q == report.quantities.end() || !q->estimable)
+          {
+            std::string estimable;
+            for (const auto &other : report.quantities)
+              if (other.estimable)
+                estimable += (estimable.empty() ? "" : ", ") + other.name;
+            throw InputError("Mesh refinement > Target quantities",
+                             "'" + name + "' is not " +
+                               (q == report.quantities.end() ?
+                                  "a quantity of this scene" :
+                                  "a quantity with an error estimate") +
+                               "; this scene estimates: " + estimable);
+          }
+        // Two meshes give an estimate of an assumed order only: the
+        // target needs the safeguarded one of three.
+        if (!q->has_estimate || q->estimate_meshes < 3 ||
+            q->estimated_relative_error() > refinement.target_accuracy)
+          report.target_unmet.push_back(name);
+      }
+    report.target_met = report.target_unmet.empty();
   }
 
   template <int dim>

@@ -30,6 +30,8 @@ namespace Signorini
         Quantity q;
         q.name  = std::string("contact_force_") + axes[d];
         q.value = summary.total_force[d];
+        q.estimable = true;
+        q.scale     = summary.total_force.norm();
         if (d == dim - 1 && hertz.active())
           {
             q.has_reference = true;
@@ -50,6 +52,7 @@ namespace Signorini
         area.reference     = hertz.modelled_fraction *
                          (hertz.point_contact() ? numbers::PI * a * a : 2. * a);
         area.tolerance = hertz.tolerance_area;
+        area.estimable = true;
         quantities.push_back(area);
       }
     Quantity active;

@@ -373,6 +373,7 @@ namespace Signorini
         q.has_reference = parameters.has_reference;
         q.reference     = parameters.reference;
         q.tolerance     = parameters.tolerance;
+        q.estimable     = true;
         quantities.push_back(q);
       }
 
@@ -384,22 +385,33 @@ namespace Signorini
         energy.evaluate(u, time, hanging_constraints, &residual, nullptr);
         std::vector<double> sums;
         for (const auto id : reaction_boundaries)
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              ComponentMask mask(dim, false);
-              mask.set(c, true);
-              IndexSet dofs = DoFTools::extract_boundary_dofs(dof_handler, mask, {id});
-              dofs = dofs & dof_handler.locally_owned_dofs();
-              double sum = 0.;
-              for (const auto i : dofs)
-                sum -= residual[i];
-              sums.push_back(Utilities::MPI::sum(sum, comm));
-              Quantity q;
-              q.name  = std::string("reaction_") + "xyz"[c] + "_boundary_" +
-                       std::to_string(id);
-              q.value = sums.back();
-              quantities.push_back(q);
-            }
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                ComponentMask mask(dim, false);
+                mask.set(c, true);
+                IndexSet dofs =
+                  DoFTools::extract_boundary_dofs(dof_handler, mask, {id});
+                dofs       = dofs & dof_handler.locally_owned_dofs();
+                double sum = 0.;
+                for (const auto i : dofs)
+                  sum -= residual[i];
+                sums.push_back(Utilities::MPI::sum(sum, comm));
+                Quantity q;
+                q.name = std::string("reaction_") + "xyz"[c] + "_boundary_" +
+                         std::to_string(id);
+                q.value     = sums.back();
+                q.estimable = true;
+                quantities.push_back(q);
+              }
+            // Each component's error is judged against the boundary's
+            // whole reaction.
+            double norm = 0.;
+            for (unsigned int c = 0; c < dim; ++c)
+              norm += sums[sums.size() - 1 - c] * sums[sums.size() - 1 - c];
+            for (unsigned int c = 0; c < dim; ++c)
+              quantities[quantities.size() - 1 - c].scale = std::sqrt(norm);
+          }
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           {
             std::ofstream csv(output_directory + "/reactions.csv",

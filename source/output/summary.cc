@@ -193,13 +193,35 @@ namespace Signorini
           o[iterations]        = c.iterations;
           o["cycle wall time [s]"] = c.cycle_seconds;
           o["wall time since start [s]"] = c.wall_seconds;
-          Json q = Json::object();
+          Json q = Json::object(), e = Json::object();
           for (const auto &qq : c.quantities)
-            q[qq.name] = qq.value;
-          o["quantities"] = q;
+            {
+              q[qq.name] = qq.value;
+              if (qq.has_estimate)
+                e[qq.name] = qq.estimated_error;
+            }
+          o["quantities"]       = q;
+          o["estimated errors"] = e;
           cycles.push_back(o);
         }
       r["cycles"] = cycles;
+      if (report.target_accuracy > 0.)
+        {
+          Json t                      = Json::object();
+          t["relative tolerance"]     = report.target_accuracy;
+          Json names                  = Json::array();
+          for (const auto &name : refinement_parameters.target_quantities)
+            names.push_back(Json(name));
+          t["quantities"]             = names;
+          t["met"]                    = report.target_met;
+          Json unmet                  = Json::array();
+          for (const auto &name : report.target_unmet)
+            unmet.push_back(Json(name));
+          t["not met"]                = unmet;
+          t["cycles"]                 = static_cast<unsigned int>(
+            report.cycles.empty() ? 0 : report.cycles.size() - 1);
+          r["target accuracy"] = t;
+        }
     }
 
     /// The quantities of the scene: value and, where there is one, the
@@ -222,6 +244,14 @@ namespace Signorini
                   o["within tolerance"] = q.within_tolerance();
                 }
             }
+          if (q.has_estimate)
+            {
+              // The discretisation error from the refinement cycles.
+              o["estimated error"]          = q.estimated_error;
+              o["estimated relative error"] = q.estimated_relative_error();
+              o["observed order"]           = q.observed_order;
+              o["meshes in estimate"]       = q.estimate_meshes;
+            }
           quantities[q.name] = o;
         }
       return quantities;
@@ -234,8 +264,14 @@ namespace Signorini
       cycles_csv << "cycle,cells,dofs,contact_nodes,refined_cells,h_min,"
                  << report.iteration_name
                  << "_iterations,cycle_wall_time,wall_time_since_start";
-      for (const auto &q : report.cycles.front().quantities)
+      // The columns are the first cycle's quantities; the estimated
+      // errors follow, empty where a cycle has none yet.
+      const auto &columns = report.cycles.front().quantities;
+      for (const auto &q : columns)
         cycles_csv << "," << q.name;
+      for (const auto &q : columns)
+        if (q.estimable)
+          cycles_csv << "," << q.name << "_estimated_error";
       cycles_csv << "\n" << std::setprecision(12);
       for (const auto &c : report.cycles)
         {
@@ -245,6 +281,14 @@ namespace Signorini
                      << c.cycle_seconds << "," << c.wall_seconds;
           for (const auto &q : c.quantities)
             cycles_csv << "," << q.value;
+          for (const auto &column : columns)
+            if (column.estimable)
+              {
+                cycles_csv << ",";
+                for (const auto &q : c.quantities)
+                  if (q.name == column.name && q.has_estimate)
+                    cycles_csv << q.estimated_error;
+              }
           cycles_csv << "\n";
         }
     }

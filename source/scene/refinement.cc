@@ -25,6 +25,26 @@ namespace Signorini
                       "solve the final load again. 0: the mesh stays as "
                       "built. summary.json and refinement_cycles.csv record "
                       "every cycle; the VTU of each is in refinement.pvd.");
+    prm.declare_entry("Target accuracy",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "Target accuracy mode [-]: run the refinement cycles "
+                      "until the estimated discretisation error of every "
+                      "quantity in 'Target quantities', relative to the "
+                      "quantity (to the vector's length for a component of "
+                      "a force), is at most this; 'Number of cycles' is then "
+                      "the most cycles it may take, and at least 2 (an "
+                      "estimate needs three meshes). A run that ends its "
+                      "cycles above the target exits as a run outside its "
+                      "tolerances. The estimates come from the cycles' "
+                      "values (doc/accuracy.md) and are in summary.json "
+                      "with any number of cycles. 0: run all the cycles.");
+    prm.declare_entry("Target quantities",
+                      "",
+                      Patterns::List(Patterns::Anything()),
+                      "The quantities (names as in summary.json, e.g. "
+                      "hertz_a, hertz_p0) the target accuracy applies to; "
+                      "empty: every quantity with an estimate.");
     prm.declare_entry("Estimator",
                       "combined",
                       Patterns::Selection("kelly|contact|combined"),
@@ -121,6 +141,14 @@ namespace Signorini
     band_gap         = prm.get_double("Contact band gap");
     uniform_zone     = prm.get_bool("Uniform contact zone");
     zone_depth       = prm.get_double("Contact zone depth");
+    target_accuracy  = prm.get_double("Target accuracy");
+    target_quantities =
+      Utilities::split_string_list(prm.get("Target quantities"), ',');
+    if (target_accuracy > 0. && cycles < 2)
+      throw InputError("Mesh refinement > Target accuracy",
+                       "a target accuracy needs 'Number of cycles' >= 2 (the "
+                       "error estimate needs three meshes); it is " +
+                         std::to_string(cycles));
     if (!std::isfinite(band_width) || !std::isfinite(band_gap))
       throw InputError("Mesh refinement > Contact band width",
                        "the band width and gap must be finite numbers");

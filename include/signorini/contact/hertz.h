@@ -11,6 +11,8 @@
 
 namespace Signorini
 {
+  using namespace dealii;
+
   namespace Contact
   {
     /**

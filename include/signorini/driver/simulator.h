@@ -86,6 +86,13 @@ namespace Signorini
     void
     refinement_cycles(const Timer &run_timer);
 
+    /// The estimated errors of the report's quantities from the cycles so
+    /// far (also into the last cycle's record), and whether they meet the
+    /// target accuracy. Throws InputError for a target quantity that the
+    /// run does not report or cannot estimate.
+    void
+    estimate_errors();
+
     /// Wall time of every phase so far, the largest over the ranks,
     /// including the runs this one was restarted from.
     std::map<std::string, double>

@@ -109,6 +109,12 @@ namespace Signorini
     unsigned int             iterations        = 0; // all steps, iteration_name's
     std::vector<Step>        steps;
     std::vector<Cycle>       cycles; // with Mesh refinement > Number of cycles > 0
+    /// Target accuracy mode (Mesh refinement > Target accuracy > 0): the
+    /// target, whether the last cycle met it, and the quantities whose
+    /// estimated relative error is still above it (or has no estimate).
+    double                   target_accuracy = 0.;
+    bool                     target_met      = false;
+    std::vector<std::string> target_unmet;
     double                   peak_memory_mb = 0.; // largest VmHWM of the ranks
     unsigned int contact_nodes = 0; // 0: no contact
     std::vector<Quantity>    quantities;

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace Signorini
 {
@@ -42,6 +43,11 @@ namespace Signorini
     double       band_gap         = -1.;
     bool         uniform_zone     = true;
     double       zone_depth       = 1.;
+    /// Target accuracy mode: stop the cycles once every quantity of
+    /// target_quantities (all estimable ones if empty) has an estimated
+    /// relative error at most target_accuracy; 0: run all the cycles.
+    double                   target_accuracy = 0.;
+    std::vector<std::string> target_quantities;
 
     static void
     declare_parameters(ParameterHandler &prm);
