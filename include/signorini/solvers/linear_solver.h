@@ -4,8 +4,10 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/solver_control.h>
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -89,6 +91,9 @@ namespace Signorini
       /// ML's "smoother: type".
       std::string  smoother              = "Chebyshev";
       bool         fallback_to_direct    = true;
+      /// CG + AMG: keep the hierarchy of the diagonally scaled matrix
+      /// across solves (solve_kept_amg()).
+      bool         keep_preconditioner   = true;
       NullSpace    null_space            = NullSpace::rigid_motions;
       /// How Newton sets an iterative solve's tolerance: the fixed
       /// 'Relative tolerance', or the Eisenstat-Walker forcing term
@@ -162,6 +167,13 @@ namespace Signorini
     /// (a second solve with the same matrix values reuses the last one).
     unsigned int
     n_numeric_factorizations() const;
+
+    /// How many AMG hierarchies the kept-preconditioner CG built.
+    unsigned int
+    n_preconditioner_builds() const
+    {
+      return amg.n_builds;
+    }
 
     /**
      * The number of negative eigenvalues of the matrix of the last solve(),
@@ -276,6 +288,31 @@ namespace Signorini
     void
     prepare_amg(const MatrixType &H) const;
 
+    /**
+     * CG on @p H with an AMG hierarchy kept across solves. H = S^-1 H_s
+     * S^-1 with S = diag(H)^-1/2 and H_s the scaled matrix, whose diagonal
+     * is 1: the rows of the contact nodes, whose barrier or penalty terms
+     * change by orders of magnitude from one iteration to the next, then
+     * change no more than the others, and ML's smoother, which keeps the
+     * diagonal of the matrix it was built for, stays right. H is scaled in
+     * place for the solve (ML's finest level reads the matrix) and scaled
+     * back; CG runs on H_s's iterates with S H_s S as the operator and S
+     * AMG(H_s)^-1 S as the preconditioner, so that it stops on the
+     * residual of the original system. The hierarchy is rebuilt when the
+     * sparsity pattern changes, when a solve fails, and after a solve that
+     * needed more than 1.5 times (plus 5) the CG iterations of the solve
+     * right after the last build. Throws what SolverCG throws.
+     */
+    void
+    solve_kept_amg(const MatrixType &H,
+                   VectorType       &x,
+                   const VectorType &b,
+                   SolverControl    &control,
+                   const std::function<SolverControl::State(const unsigned int,
+                                                            const double,
+                                                            const VectorType &)>
+                     &check) const;
+
     /// The AMG hierarchy of the last iterative solve and the matrix it was
     /// built from: its address, pattern and values (a cache: solve() is
     /// const).
@@ -285,6 +322,13 @@ namespace Signorini
       const void  *matrix        = nullptr;
       std::size_t  pattern_hash  = 0;
       std::size_t  values_hash   = 0;
+      /// Built by solve_kept_amg() for the scaled matrix.
+      bool         scaled          = false;
+      /// A kept hierarchy that the next solve must rebuild.
+      bool         rebuild         = false;
+      /// CG iterations of the solve right after the last build.
+      unsigned int base_iterations = 0;
+      unsigned int n_builds        = 0;
     };
 
     Parameters          parameters;
