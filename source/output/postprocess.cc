@@ -377,12 +377,17 @@ namespace Signorini
         quantities.push_back(q);
       }
 
+    // The energy of the bodies at this state (the reactions' residual
+    // comes with it).
+    Evaluation evaluation;
+    bool       evaluated = false;
     if (!reaction_boundaries.empty())
       {
         // Reaction = f_int - f_ext at the boundary's degrees of freedom,
         // i.e. minus the unconstrained residual (hanging nodes condensed).
         VectorType residual(dof_handler.locally_owned_dofs(), comm);
-        energy.evaluate(u, time, hanging_constraints, &residual, nullptr);
+        evaluation = energy.evaluate(u, time, hanging_constraints, &residual, nullptr);
+        evaluated  = true;
         std::vector<double> sums;
         for (const auto id : reaction_boundaries)
           {
@@ -432,6 +437,16 @@ namespace Signorini
             csv << "\n";
           }
       }
+    // The total potential energy of the modelled part: the strain energy
+    // minus the work of the dead loads, without the contact terms (a
+    // penalty's or a barrier's energy is not the bodies').
+    if (!evaluated)
+      evaluation = energy.evaluate(u, time, hanging_constraints, nullptr, nullptr);
+    Quantity potential;
+    potential.name      = "potential_energy";
+    potential.value     = evaluation.value;
+    potential.estimable = true;
+    quantities.push_back(potential);
     return quantities;
   }
 
