@@ -579,6 +579,27 @@ namespace Signorini
     amg.scaled       = false;
   }
 
+  namespace
+  {
+    /// The operator w o A o w (w a diagonal, as a vector): vmult(dst, src)
+    /// is w .* (A (w .* src)).
+    template <class Operator>
+    struct Sandwiched
+    {
+      const Operator    &A;
+      const VectorType  &w;
+      mutable VectorType tmp;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        tmp = src;
+        tmp.scale(w);
+        A.vmult(dst, tmp);
+        dst.scale(w);
+      }
+    };
+  } // namespace
+
   void
   LinearSolver::solve_kept_amg(
     const MatrixType &H,
@@ -651,34 +672,9 @@ namespace Signorini
 
     // H = S^-1 H_s S^-1 and the preconditioner S AMG(H_s)^-1 S: CG's
     // iterates are S^-1 times those of CG on H_s, its residuals H's own.
-    struct Operator
-    {
-      const MatrixType  &H_s;
-      const VectorType  &w_inv;
-      mutable VectorType tmp;
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        tmp = src;
-        tmp.scale(w_inv);
-        H_s.vmult(dst, tmp);
-        dst.scale(w_inv);
-      }
-    } op{H, w_inv, VectorType(b)};
-    struct Preconditioner
-    {
-      const TrilinosWrappers::PreconditionAMG &amg;
-      const VectorType                        &w;
-      mutable VectorType                       tmp;
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        tmp = src;
-        tmp.scale(w);
-        amg.vmult(dst, tmp);
-        dst.scale(w);
-      }
-    } preconditioner{*amg.preconditioner, w, VectorType(b)};
+    const Sandwiched<MatrixType> op{H, w_inv, VectorType(b)};
+    const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
+      *amg.preconditioner, w, VectorType(b)};
 
     SolverCG<VectorType> cg(control);
     cg.connect(check);
