@@ -10,6 +10,8 @@
 //   differences are 7e-7 and 6e-5, so these references are good to about
 //   1e-5 relative, ten times below the errors checked here);
 // - the same on 2 ranks: the same cycles and numbers to 1e-8;
+// - restarted from the checkpoint of its last cycle, the run adds no cycle
+//   (whether the target was met is worked out again from the cycles);
 // - a target the cycles cannot reach (1e-6 in 3 cycles): exit code 4 (a
 //   tolerance missed), "met": false and the quantities above the target
 //   named in summary.json;
@@ -97,6 +99,21 @@ main()
   out << "2 ranks: the same cycles and numbers to 1e-8: "
       << verdict(RunOutput::same_cycles(
            cycles, RunOutput::read_csv("two_ranks/refinement_cycles.csv"), 1e-8))
+      << "\n";
+
+  // A restart from the checkpoint of the cycle that met the target runs
+  // no further cycle.
+  const int checkpointed = RunOutput::run_scene(
+    "checkpointed", "hertz_adaptive.prm",
+    edits + "subsection Checkpoint\n  set Write checkpoints = true\n"
+            "  set Every load steps = 1\nend\n");
+  const auto restarted = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                            " --restart checkpointed 2>&1");
+  out << "a restart after the target was met exits 0 and adds no cycle: "
+      << verdict(checkpointed == 0 && restarted.first == 0 &&
+                 RunOutput::same_cycles(
+                   cycles, RunOutput::read_csv("checkpointed/refinement_cycles.csv"),
+                   1e-8))
       << "\n";
 
   const int missed = exit_code(

@@ -337,6 +337,8 @@ namespace Signorini
       report.cycles.push_back(c);
       estimate_errors();
     };
+    if (!report.cycles.empty())
+      estimate_errors(); // a restart: whether its cycles met the target
     if (report.cycles.empty())
       {
         record_cycle(0, report.iterations, 0, elapsed(run_timer));
