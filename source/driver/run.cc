@@ -518,7 +518,7 @@ namespace Signorini
             {
               std::cout << "Target accuracy " << report.target_accuracy
                         << (report.target_met ? " met" : " NOT MET") << " after "
-                        << (report.cycles.empty() ? 0 : report.cycles.size() - 1)
+                        << report.last_cycle()
                         << " refinement cycles";
               if (!report.target_unmet.empty())
                 {

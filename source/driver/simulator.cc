@@ -962,7 +962,7 @@ namespace Signorini
     if (root)
       write_progress(output_directory, report.status, report.final_time,
                      parameters.load_stepping.end_time, report.steps.size(),
-                     report.cycles.empty() ? 0 : report.cycles.size() - 1,
+                     report.last_cycle(),
                      report.timing["total"], 0.);
     if (postprocessor->verbosity() == PostprocessParameters::Verbosity::verbose)
       timer->print_summary();

@@ -377,17 +377,18 @@ namespace Signorini
         quantities.push_back(q);
       }
 
-    // The energy of the bodies at this state (the reactions' residual
-    // comes with it).
-    Evaluation evaluation;
-    bool       evaluated = false;
+    // The energy of the bodies at this state, with the residual when the
+    // reactions need it: reaction = f_int - f_ext at the boundary's
+    // degrees of freedom, i.e. minus the unconstrained residual (hanging
+    // nodes condensed).
+    VectorType residual;
+    if (!reaction_boundaries.empty())
+      residual.reinit(dof_handler.locally_owned_dofs(), comm);
+    const Evaluation evaluation =
+      energy.evaluate(u, time, hanging_constraints,
+                      reaction_boundaries.empty() ? nullptr : &residual, nullptr);
     if (!reaction_boundaries.empty())
       {
-        // Reaction = f_int - f_ext at the boundary's degrees of freedom,
-        // i.e. minus the unconstrained residual (hanging nodes condensed).
-        VectorType residual(dof_handler.locally_owned_dofs(), comm);
-        evaluation = energy.evaluate(u, time, hanging_constraints, &residual, nullptr);
-        evaluated  = true;
         std::vector<double> sums;
         for (const auto id : reaction_boundaries)
           {
@@ -440,8 +441,6 @@ namespace Signorini
     // The total potential energy of the modelled part: the strain energy
     // minus the work of the dead loads, without the contact terms (a
     // penalty's or a barrier's energy is not the bodies').
-    if (!evaluated)
-      evaluation = energy.evaluate(u, time, hanging_constraints, nullptr, nullptr);
     Quantity potential;
     potential.name      = "potential_energy";
     potential.value     = evaluation.value;

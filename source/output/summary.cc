@@ -218,8 +218,7 @@ namespace Signorini
           for (const auto &name : report.target_unmet)
             unmet.push_back(Json(name));
           t["not met"]                = unmet;
-          t["cycles"]                 = static_cast<unsigned int>(
-            report.cycles.empty() ? 0 : report.cycles.size() - 1);
+          t["cycles"]                 = report.last_cycle();
           r["target accuracy"] = t;
         }
     }

@@ -37,7 +37,7 @@ namespace Signorini
                       "estimate needs three meshes). A run that ends its "
                       "cycles above the target exits as a run outside its "
                       "tolerances. The estimates come from the cycles' "
-                      "values (doc/accuracy.md) and are in summary.json "
+                      "values (doc/accuracy-cost.md) and are in summary.json "
                       "with any number of cycles. 0: run all the cycles.");
     prm.declare_entry("Target quantities",
                       "",

@@ -610,19 +610,19 @@ namespace Signorini
                                              const double,
                                              const VectorType &)> &check) const
   {
-    // The scaling S = diag(H)^-1/2, as Epetra vectors for the matrix and
-    // as vectors of b's layout (the same locally owned rows) for CG.
+    // The scaling S = diag(H)^-1/2 and its inverse, as vectors of b's
+    // layout (the matrix's locally owned rows): CG scales with them, and
+    // the matrix with their Epetra vectors.
     Epetra_CrsMatrix &A = const_cast<Epetra_CrsMatrix &>(H.trilinos_matrix());
-    Epetra_Vector     s(A.RowMap()), s_inv(A.RowMap());
+    VectorType         w(b), w_inv(b);
+    Epetra_Vector     &s     = *w.trilinos_vector()(0);
+    Epetra_Vector     &s_inv = *w_inv.trilinos_vector()(0);
     A.ExtractDiagonalCopy(s);
-    VectorType w(b), w_inv(b);
     for (int i = 0; i < s.MyLength(); ++i)
       {
         const double d = std::abs(s[i]);
         s[i]           = d > 0. ? 1. / std::sqrt(d) : 1.;
         s_inv[i]       = 1. / s[i];
-        w.trilinos_vector()[0][i]     = s[i];
-        w_inv.trilinos_vector()[0][i] = s_inv[i];
       }
     // H is H_s = S H S while this object lives, and H again after (also
     // when CG throws).

@@ -44,9 +44,8 @@ namespace Signorini
      * - Two meshes: |Q_1 - Q_0| / (r - 1).
      * - Fewer, or a value that is not finite: no estimate.
      *
-     * The fitted form and the safeguards are the ones that, on the 2D
-     * rigid Hertz scene with 10 cycles, came within a factor 3 of the
-     * true error for a, p0 from the fourth cycle on (doc/accuracy.md).
+     * How well this brackets the true error on the committed scenes is
+     * measured by benchmarks/error_estimates.py (doc/accuracy-cost.md).
      */
     Estimate
     estimate(const std::vector<double> &h, const std::vector<double> &values);

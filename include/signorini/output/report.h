@@ -109,6 +109,12 @@ namespace Signorini
     unsigned int             iterations        = 0; // all steps, iteration_name's
     std::vector<Step>        steps;
     std::vector<Cycle>       cycles; // with Mesh refinement > Number of cycles > 0
+    /// The number of the last refinement cycle recorded (0 without any).
+    unsigned int
+    last_cycle() const
+    {
+      return cycles.empty() ? 0 : cycles.size() - 1;
+    }
     /// Target accuracy mode (Mesh refinement > Target accuracy > 0): the
     /// target, whether the last cycle met it, and the quantities whose
     /// estimated relative error is still above it (or has no estimate).
