@@ -67,10 +67,10 @@ namespace Signorini
 
     template <int dim>
     typename Model<dim>::StateSummary
-    Model<dim>::summarize_state(const VectorType &u) const
+    Model<dim>::summarize_state(const VectorType              &u,
+                                const std::vector<NodeSample> &samples) const
     {
-      const MPI_Comm comm    = this->contact_nodes_on_boundary().get_communicator();
-      const auto     samples = node_samples(u, nodal_forces);
+      const MPI_Comm comm      = this->contact_nodes_on_boundary().get_communicator();
       const double   threshold = active_threshold(pressures_of(samples), comm);
       StateSummary   s;
       s.n_nodes = n_global_nodes();
@@ -116,10 +116,9 @@ namespace Signorini
 
     template <int dim>
     std::vector<std::pair<Point<dim>, double>>
-    Model<dim>::gather_pressure(const VectorType &u, const std::vector<double> &forces) const
+    Model<dim>::gather_pressure(const std::vector<NodeSample> &samples) const
     {
       const auto  &boundary  = this->contact_nodes_on_boundary();
-      const auto   samples   = node_samples(u, forces);
       const double threshold =
         active_threshold(pressures_of(samples), boundary.get_communicator());
       std::vector<std::pair<Point<dim>, double>> local;
@@ -154,14 +153,15 @@ namespace Signorini
 
     template <int dim>
     void
-    Model<dim>::write_profile(const std::string                               &file,
-                              const VectorType                                &u,
-                              const std::vector<double>                       &forces,
+    Model<dim>::write_profile(const std::string &file,
+                              const VectorType &,
+                              const std::vector<double> &,
+                              const std::vector<NodeSample>                   &samples,
                               const std::function<double(const Point<dim> &)> &reference) const
     {
       // X.., x.., the gaps, pressure, force.., weight[, reference].
       std::vector<std::vector<double>> rows;
-      for (const NodeSample &sample : node_samples(u, forces))
+      for (const NodeSample &sample : samples)
         {
           std::vector<double> row;
           for (unsigned int d = 0; d < dim; ++d)

@@ -95,12 +95,13 @@ namespace Signorini
     template <int dim>
     void
     TwoBodyContact<dim>::write_profile(
-      const std::string                               &file,
-      const VectorType                                &u,
-      const std::vector<double>                       &forces,
-      const std::function<double(const Point<dim> &)> &reference_pressure) const
+      const std::string                                  &file,
+      const VectorType                                   &u,
+      const std::vector<double>                          &forces,
+      const std::vector<typename Model<dim>::NodeSample> &samples,
+      const std::function<double(const Point<dim> &)>    &reference_pressure) const
     {
-      Model<dim>::write_profile(file, u, forces, reference_pressure);
+      Model<dim>::write_profile(file, u, forces, samples, reference_pressure);
       // Body 2's side beside it: NAME_target.csv.
       const auto dot = file.rfind(".csv");
       write_target_profile((dot == std::string::npos ? file : file.substr(0, dot)) +
@@ -202,8 +203,8 @@ namespace Signorini
     template typename PenaltyTerm<3>::Measure TwoBodyContact<3>::measure(const VectorType &u, const std::vector<double> &forces) const;
     template std::vector<typename Model<2>::NodeSample> TwoBodyContact<2>::node_samples(const VectorType &, const std::vector<double> &) const;
     template std::vector<typename Model<3>::NodeSample> TwoBodyContact<3>::node_samples(const VectorType &, const std::vector<double> &) const;
-    template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<2> &)> &reference_pressure) const;
-    template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::function<double(const Point<3> &)> &reference_pressure) const;
+    template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<2>::NodeSample> &samples, const std::function<double(const Point<2> &)> &reference_pressure) const;
+    template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<3>::NodeSample> &samples, const std::function<double(const Point<3> &)> &reference_pressure) const;
     template void TwoBodyContact<2>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<3>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<2>::check_initial_state(const VectorType &u) const;

@@ -207,31 +207,33 @@ namespace Signorini
 
       /**
        * Active set, penetration, total force, moment, area and largest
-       * pressure of the ghosted state @p u with the recorded forces, from
-       * node_samples() (collective). A node is active when its pressure
-       * exceeds 1e-6 of the largest on any rank.
+       * pressure of the ghosted state @p u, from its @p samples
+       * (node_samples() at @p u; collective). A node is active when its
+       * pressure exceeds 1e-6 of the largest on any rank.
        */
       StateSummary
-      summarize_state(const VectorType &u) const;
+      summarize_state(const VectorType &u, const std::vector<NodeSample> &samples) const;
 
       /// The number of active nodes (as summarize_state() counts them) for
       /// the nodal @p forces at @p u, on all ranks (collective).
       unsigned int
       n_active(const VectorType &u, const std::vector<double> &forces) const;
 
-      /// (current position, pressure) of the active nodes for @p forces,
-      /// on every rank, sorted by position (collective).
+      /// (current position, pressure) of the active nodes of @p samples
+      /// (node_samples()), on every rank, sorted by position (collective).
       std::vector<std::pair<Point<dim>, double>>
-      gather_pressure(const VectorType &u, const std::vector<double> &forces) const;
+      gather_pressure(const std::vector<NodeSample> &samples) const;
 
-      /// The profile along Gamma_C as CSV (rank 0 writes; collective), for
-      /// the nodal @p forces, with a reference pressure where
-      /// @p reference is given: one row per node_samples() entry. A model
-      /// may write more beside it (two bodies: body 2's side).
+      /// The profile along Gamma_C as CSV (rank 0 writes; collective): one
+      /// row per entry of @p samples (node_samples() at @p u for the nodal
+      /// @p forces), with a reference pressure where @p reference is
+      /// given. A model may write more beside it (two bodies: body 2's
+      /// side, from @p u and @p forces).
       virtual void
       write_profile(const std::string                               &file,
                     const VectorType                                &u,
                     const std::vector<double>                       &forces,
+                    const std::vector<NodeSample>                   &samples,
                     const std::function<double(const Point<dim> &)> &reference) const;
 
       /// The nodal fields contact_pressure, contact_GAP (the first of

@@ -331,9 +331,10 @@ namespace Signorini
 
       /// Model's profile, and body 2's side beside it (NAME_target.csv).
       void
-      write_profile(const std::string                               &file,
-                    const VectorType                                &u,
-                    const std::vector<double>                       &forces,
+      write_profile(const std::string                                    &file,
+                    const VectorType                                     &u,
+                    const std::vector<double>                            &forces,
+                    const std::vector<typename Model<dim>::NodeSample>   &samples,
                     const std::function<double(const Point<dim> &)> &reference_pressure) const override;
 
     private:

@@ -198,12 +198,13 @@ namespace Signorini
       }
 
       void
-      write_profile(const std::string                               &file,
-                    const VectorType                                &u,
-                    const std::vector<double>                       &forces,
+      write_profile(const std::string                                  &file,
+                    const VectorType                                   &u,
+                    const std::vector<double>                          &forces,
+                    const std::vector<typename Model<dim>::NodeSample> &samples,
                     const std::function<double(const Point<dim> &)> &reference) const override
       {
-        first.write_profile(file, u, forces, reference);
+        first.write_profile(file, u, forces, samples, reference);
       }
 
       /// The first pass's block, "passes": 2 and the second pass's broad
