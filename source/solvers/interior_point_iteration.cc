@@ -313,9 +313,14 @@ namespace Signorini
   InteriorPointIteration<dim>::polish_if_settled(const Residuals   &r,
                                                  const unsigned int iteration)
   {
+    // Iterative solves need the kept hierarchy of the scaled matrix, which
+    // sees the pinned rows' stiff penalty as a unit diagonal (a hierarchy
+    // of the unscaled matrix made CG crawl).
+    const auto &linear = minimizer.linear_solver.get_parameters();
     if (!parameters.active_set_polish || minimizer.n_constraints == 0 ||
-        minimizer.linear_solver.get_parameters().type !=
-          LinearSolver::Parameters::Type::direct ||
+        (linear.type != LinearSolver::Parameters::Type::direct &&
+         !(linear.type == LinearSolver::Parameters::Type::cg_amg &&
+           linear.keep_preconditioner)) ||
         r.complementarity > 1e-4 * unit || r.primal > parameters.tolerance * h)
       return false;
     std::vector<char> pinned(n, 0);
@@ -324,7 +329,11 @@ namespace Signorini
     // The polish is collective: every rank tries it if the active set
     // changed on any rank (a rank without contact nodes sees none change;
     // deciding locally hung 4-rank runs).
-    if (Utilities::MPI::max(pinned != last_polished ? 1. : 0., comm) == 0.)
+    // Without a pinned node the bodies held by contact alone are free (a
+    // singular matrix); the polish waits for a contact zone.
+    if (Utilities::MPI::max(pinned != last_polished ? 1. : 0., comm) == 0. ||
+        Utilities::MPI::max(std::count(pinned.begin(), pinned.end(), 1) > 0 ? 1. : 0.,
+                            comm) == 0.)
       return false;
     last_polished = pinned;
     if (!polish(pinned, iteration))

@@ -78,22 +78,50 @@ namespace Signorini
     return check;
   }
 
+  template <int dim>
+  void
+  InteriorPointIteration<dim>::update_pinned(std::vector<char>   &pinned,
+                                             std::vector<double> &zp)
+  {
+    unsigned int changed = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      if (minimizer.active[k])
+        {
+          if (pinned[k] && zp[k] < 0.)
+            pinned[k] = 0;
+          else if (!pinned[k] && -state[k].g > parameters.tolerance * h)
+            pinned[k] = 1;
+          else
+            continue;
+          zp[k] = 0.;
+          ++changed;
+        }
+    minimizer.progress << "      active set updated: "
+                       << Utilities::MPI::sum(changed, comm) << " nodes" << std::endl;
+  }
+
   /*
    * The first step factorises the Hessian with the pinned blocks; the next
    * ones are chord steps on that factorisation (only the gradient is
    * evaluated and K keeps its values, so the direct solver solves again
-   * without factorising) as long as each divides |r_d| by at least 10, and
-   * refactorise at the current state otherwise: at most 3 factorisations
-   * and 6 steps. Kept, with z of the free nodes zero and s = max(g, 0), if
-   * the dual residual is at most tol F, no node penetrates by more than
-   * tol h and no pinned force is negative; otherwise u is restored and the
-   * iteration goes on. When kept, the statistics hold the result.
+   * without factorising and a kept AMG hierarchy is reused) as long as each
+   * divides |r_d| by at least 10, and refactorise at the current state
+   * otherwise: at most 3 factorisations and 6 steps. A step after which a
+   * free node penetrates by more than tol h or a pinned node pulls shows
+   * that the active set is not the solution's: with 'Active-set polish
+   * updates' left, those nodes are pinned / freed and the steps go on from
+   * there (3 more steps and one more factorisation per update); otherwise
+   * the attempt ends. Kept, with z of the free nodes zero and s = max(g,
+   * 0), if the dual residual is at most tol F, no node penetrates by more
+   * than tol h and no pinned force is negative; otherwise u is restored and
+   * the iteration goes on. When kept, the statistics hold the result.
    */
   template <int dim>
   bool
-  InteriorPointIteration<dim>::polish(const std::vector<char> &pinned,
+  InteriorPointIteration<dim>::polish(const std::vector<char> &start_set,
                                       const unsigned int       iteration)
   {
+    std::vector<char>   pinned(start_set);
     const VectorType    u_start(u);
     std::vector<double> zp(n, 0.);
     for (unsigned int k = 0; k < n; ++k)
@@ -102,9 +130,20 @@ namespace Signorini
     const double rho = 1e6 * largest_diagonal();
     VectorType   b_p(rhs), du(rhs), residual(rhs), forces(ghosted);
     bool         kept = false, refactorise = true;
-    unsigned int steps = 0, factorisations = 0;
+    unsigned int steps = 0, factorisations = 0, updates = 0;
+    // Each update costs a factorisation with a direct solver (an interior
+    // point iteration solves twice with one), a solve with CG + AMG (an
+    // interior point iteration solves twice).
+    const unsigned int max_updates =
+      parameters.polish_updates != InteriorPointParameters::automatic ?
+        parameters.polish_updates :
+      minimizer.linear_solver.get_parameters().type ==
+          LinearSolver::Parameters::Type::direct ?
+        0 :
+        6;
     double       r = 0., r_previous = std::numeric_limits<double>::infinity();
-    while (steps < 6 && !kept && (!refactorise || factorisations < 3))
+    while (steps < 6 + 3 * updates && !kept &&
+           (!refactorise || factorisations < 3 + updates))
       {
         if (refactorise && steps > 0)
           {
@@ -126,7 +165,12 @@ namespace Signorini
         }
         ++steps;
         if (!solved)
-          break;
+          {
+            minimizer.progress << "      active-set polish step " << steps
+                               << ": the linear solve failed (" << stats.linear_message
+                               << ")" << std::endl;
+            break;
+          }
         constraints.distribute(du);
         u.add(1., du);
         {
@@ -152,7 +196,15 @@ namespace Signorini
         // active set is not the solution's. The pinned gaps reach zero as
         // the forces converge (the penalty holds them to r / rho).
         if (check.free_penetration > parameters.tolerance * h || check.negative > 0.)
-          break;
+          {
+            if (updates == max_updates)
+              break;
+            update_pinned(pinned, zp);
+            ++updates;
+            refactorise = true;
+            r_previous  = std::numeric_limits<double>::infinity();
+            continue;
+          }
         kept = r <= parameters.tolerance * F && check.penetration <= parameters.tolerance * h;
         // A step that made the residual grow or shrink less than 10x: the
         // next one refactorises (after a refactorising step, chord).
@@ -191,6 +243,8 @@ namespace Signorini
   InteriorPointIteration<dim>::equilibrium_forces(const std::vector<char> &,           \
                                                   const VectorType &,                  \
                                                   std::vector<double> &) const;        \
+  template void InteriorPointIteration<dim>::update_pinned(std::vector<char> &,        \
+                                                          std::vector<double> &);      \
   template bool InteriorPointIteration<dim>::polish(const std::vector<char> &,         \
                                                     const unsigned int);
   SIGNORINI_INSTANTIATE(2)

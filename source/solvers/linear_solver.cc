@@ -600,7 +600,7 @@ namespace Signorini
     };
   } // namespace
 
-  void
+  unsigned int
   LinearSolver::solve_kept_amg(
     const MatrixType &H,
     VectorType       &x,
@@ -647,37 +647,83 @@ namespace Signorini
     const std::size_t pattern = sparsity_pattern_hash(A);
     const bool same_here = amg.preconditioner && amg.scaled && amg.matrix == &A &&
                            amg.pattern_hash == pattern && !amg.rebuild;
-    const bool keep =
-      Utilities::MPI::min(same_here ? 1 : 0, H.get_mpi_communicator()) == 1;
+    bool keep = Utilities::MPI::min(same_here ? 1 : 0, H.get_mpi_communicator()) == 1;
+    const auto build = [&]() {
+      amg.preconditioner.reset();
+      Teuchos::ParameterList              list;
+      std::unique_ptr<Epetra_MultiVector> modes;
+      amg_parameters(H, list, modes);
+      // The near null space of H_s is S^-1 times that of H.
+      if (modes)
+        for (int m = 0; m < modes->NumVectors(); ++m)
+          for (int i = 0; i < s.MyLength(); ++i)
+            (*modes)[m][i] *= s_inv[i];
+      amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      amg.preconditioner->initialize(H, list);
+      amg.matrix       = &A;
+      amg.pattern_hash = pattern;
+      amg.values_hash  = 0;
+      amg.scaled       = true;
+      amg.rebuild      = false;
+      ++amg.n_builds;
+    };
     if (!keep)
-      {
-        amg.preconditioner.reset();
-        Teuchos::ParameterList              list;
-        std::unique_ptr<Epetra_MultiVector> modes;
-        amg_parameters(H, list, modes);
-        // The near null space of H_s is S^-1 times that of H.
-        if (modes)
-          for (int m = 0; m < modes->NumVectors(); ++m)
-            for (int i = 0; i < s.MyLength(); ++i)
-              (*modes)[m][i] *= s_inv[i];
-        amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg.preconditioner->initialize(H, list);
-        amg.matrix       = &A;
-        amg.pattern_hash = pattern;
-        amg.values_hash  = 0;
-        amg.scaled       = true;
-        amg.rebuild      = false;
-        ++amg.n_builds;
-      }
+      build();
 
     // H = S^-1 H_s S^-1 and the preconditioner S AMG(H_s)^-1 S: CG's
     // iterates are S^-1 times those of CG on H_s, its residuals H's own.
     const Sandwiched<MatrixType> op{H, w_inv, VectorType(b)};
+    // A failure of the caller's check (not of the hierarchy) is rethrown.
+    bool       check_failed = false;
+    const auto checked      = [&](const unsigned int i, const double r, const VectorType &v) {
+      const SolverControl::State state = check(i, r, v);
+      check_failed = check_failed || state == SolverControl::failure;
+      return state;
+    };
+    unsigned int wasted = 0;
+    if (keep)
+      {
+        // A kept hierarchy that no longer fits the matrix (the active-set
+        // polish's pinned nodes, a new contact zone) would let CG run to
+        // the iteration limit: it gets 3 times (plus 20) the iterations
+        // of the solve after its build, and is rebuilt for a second try.
+        const unsigned int limit = control.max_steps();
+        const unsigned int cap   = std::min(limit, 3 * amg.base_iterations + 20);
+        control.set_max_steps(cap);
+        const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
+          *amg.preconditioner, w, VectorType(b)};
+        SolverCG<VectorType> cg(control);
+        cg.connect(checked);
+        try
+          {
+            cg.solve(op, x, b, preconditioner);
+          }
+        catch (...)
+          {
+            control.set_max_steps(limit);
+            if (check_failed || cap == limit || control.last_step() < cap)
+              {
+                amg.rebuild = true;
+                throw;
+              }
+            wasted = control.last_step();
+            keep   = false;
+            x      = 0.;
+          }
+        control.set_max_steps(limit);
+        if (keep)
+          {
+            if (control.last_step() > 1.5 * amg.base_iterations + 5)
+              amg.rebuild = true;
+            return 0;
+          }
+        build();
+      }
+
     const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
       *amg.preconditioner, w, VectorType(b)};
-
     SolverCG<VectorType> cg(control);
-    cg.connect(check);
+    cg.connect(checked);
     try
       {
         cg.solve(op, x, b, preconditioner);
@@ -687,10 +733,8 @@ namespace Signorini
         amg.rebuild = true;
         throw;
       }
-    if (!keep)
-      amg.base_iterations = control.last_step();
-    else if (control.last_step() > 1.5 * amg.base_iterations + 5)
-      amg.rebuild = true;
+    amg.base_iterations = control.last_step();
+    return wasted;
   }
 
   bool
@@ -713,6 +757,7 @@ namespace Signorini
                                 parameters.relative_tolerance;
     SolverControl control(parameters.max_iterations,
                           info.relative_tolerance * b.l2_norm());
+    unsigned int  wasted = 0; // CG iterations with a kept hierarchy that failed
     try
       {
         // Stops the solver at an iterate beyond max_solution (the same
@@ -727,7 +772,7 @@ namespace Signorini
         };
         if (parameters.type == Parameters::Type::cg_amg &&
             parameters.keep_preconditioner)
-          solve_kept_amg(H, x, b, control, bounded);
+          wasted = solve_kept_amg(H, x, b, control, bounded);
         else if (parameters.type == Parameters::Type::cg_amg)
           {
             prepare_amg(H);
@@ -742,12 +787,12 @@ namespace Signorini
             minres.connect(bounded);
             minres.solve(H, x, b, *amg.preconditioner);
           }
-        info.iterations = control.last_step();
+        info.iterations = wasted + control.last_step();
         return true;
       }
     catch (const std::exception &e)
       {
-        info.iterations = control.last_step();
+        info.iterations = wasted + control.last_step();
         if (info.singular)
           {
             message = parameters.name() + " stopped after " +

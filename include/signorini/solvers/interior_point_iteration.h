@@ -210,9 +210,14 @@ namespace Signorini
     /// Add delta I to K until solve_direction() succeeds.
     bool
     regularise_and_solve();
-    /// Newton steps on the pinned nodes' active set; whether kept.
+    /// Newton steps on the active set @p start_set (updated inside, see
+    /// interior_point_polish.cc); whether kept.
     bool
-    polish(const std::vector<char> &pinned, const unsigned int iteration);
+    polish(const std::vector<char> &start_set, const unsigned int iteration);
+    /// Frees the pinned nodes with a negative force and pins the free ones
+    /// that penetrate by more than tol h (their zp restart at zero).
+    void
+    update_pinned(std::vector<char> &pinned, std::vector<double> &zp);
     /// Add the pinned nodes' stiff penalty to the right-hand side @p b_p
     /// (and to K when @p with_matrix).
     void

@@ -22,6 +22,10 @@ namespace Signorini
     double       initial_slack          = 1e-2;
     bool         warm_start             = true;
     bool         active_set_polish      = true;
+    /// Active-set updates allowed inside one polish attempt, or automatic
+    /// (0 with a direct linear solver, 6 with an iterative one).
+    static constexpr unsigned int automatic = static_cast<unsigned int>(-1);
+    unsigned int polish_updates         = automatic;
     double       armijo_c1              = 1e-4;
     unsigned int max_backtracks         = 30;
     double       initial_regularization = 1e-8;

@@ -301,9 +301,12 @@ namespace Signorini
      * residual of the original system. The hierarchy is rebuilt when the
      * sparsity pattern changes, when a solve fails, and after a solve that
      * needed more than 1.5 times (plus 5) the CG iterations of the solve
-     * right after the last build. Throws what SolverCG throws.
+     * right after the last build. A kept hierarchy gets 3 times (plus 20)
+     * those iterations: a solve that needs more is started again with a
+     * new hierarchy, and the iterations of the first try are returned
+     * (0 otherwise). Throws what SolverCG throws.
      */
-    void
+    unsigned int
     solve_kept_amg(const MatrixType &H,
                    VectorType       &x,
                    const VectorType &b,
