@@ -1,16 +1,17 @@
 // The active-set polish under CG + AMG with the kept, diagonally scaled
-// hierarchy, on the committed 3D scene prm/hertz_sphere.prm (28 071 DoFs,
+// hierarchy, on the committed 3D scene prm/hertz_sphere.prm (27 882 DoFs,
 // interior point method, 2 load steps). Measured when written, one rank:
-// polish off 20 interior point iterations and 702 CG iterations; polish
-// without active-set updates 13 and 530; with the default (6 updates per
-// attempt under CG) 11 and 394. Checked:
+// polish off 16 interior point iterations and 547 CG iterations; polish
+// without active-set updates 13 and 517; with the default (6 updates per
+// attempt under CG) 11 and 369. Checked, with margins for other BLAS
+// kernels:
 // - the default polish gives the answers of the plain interior point
-//   method (p0, a, the contact force) to 1e-6, with at least 5 fewer
-//   interior point iterations and at most 3/4 of its CG iterations;
+//   method (p0, a, the contact force) to 1e-6, with at least 3 fewer
+//   interior point iterations and at most 0.8 times its CG iterations;
 // - its answer has exact complementarity: no node penetrates by more than
 //   1e-12 h;
-// - updating the active set inside an attempt takes fewer interior point
-//   iterations than ending the attempt at the first wrong node
+// - updating the active set inside an attempt takes at most 0.85 times
+//   the CG iterations of ending the attempt at the first wrong node
 //   ('Active-set polish updates = 0');
 // - two ranks give the one-rank answers to 1e-7.
 
@@ -62,14 +63,14 @@ main()
   out << "all runs converged: " << verdict(ran) << "\n"
       << "the polished answers equal the plain method's to 1e-6: "
       << verdict(ran && against_off < 1e-6) << "\n"
-      << "at least 5 fewer interior point iterations: "
-      << verdict(ran && iterations("default") + 5 <= iterations("off")) << "\n"
-      << "at most 3/4 of the CG iterations: "
-      << verdict(ran && cg("default") <= 0.75 * cg("off")) << "\n"
+      << "at least 3 fewer interior point iterations: "
+      << verdict(ran && iterations("default") + 3 <= iterations("off")) << "\n"
+      << "at most 0.8 times the CG iterations: "
+      << verdict(ran && cg("default") <= 0.8 * cg("off")) << "\n"
       << "no node penetrates by more than 1e-12 h: "
       << verdict(ran && penetration <= 1e-12) << "\n"
-      << "active-set updates take fewer iterations than none: "
-      << verdict(ran && iterations("default") < iterations("no_updates")) << "\n"
+      << "active-set updates take at most 0.85 times the CG iterations of none: "
+      << verdict(ran && cg("default") <= 0.85 * cg("no_updates")) << "\n"
       << "two ranks give the same answers to 1e-7: "
       << verdict(ran && against_two < 1e-7) << "\n";
 }
