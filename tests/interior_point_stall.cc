@@ -36,7 +36,8 @@ main()
   std::ofstream     out("output");
   const std::string mpirun = "mpirun --allow-run-as-root --oversubscribe -np 2 ";
   const std::string tight  = "subsection Solver\n  subsection Interior point\n"
-                            "    set Tolerance = 1e-15\n  end\nend\n";
+                            "    set Tolerance = 1e-15\n  end\nend\n"
+                            "subsection Load stepping\n  set Number of steps = 2\nend\n";
   const int one = RunOutput::run_scene("one_rank", "hertz_sphere.prm", tight);
   const int off = RunOutput::run_scene(
     "no_acceptable",
@@ -44,7 +45,8 @@ main()
     "subsection Solver\n  subsection Interior point\n"
     "    set Tolerance = 1e-15\n    set Acceptable tolerance = 0\n"
     "    set Maximum iterations = 20\n  end\nend\n"
-    "subsection Load stepping\n  set Minimum step fraction = 0.4\nend\n");
+    "subsection Load stepping\n  set Number of steps = 2\n"
+    "  set Minimum step fraction = 0.4\nend\n");
   const int two = RunOutput::run_scene("two_ranks", "hertz_sphere.prm", tight, mpirun);
 
   const auto   numbers    = RunOutput::summary_numbers("one_rank/summary.json");
