@@ -239,6 +239,22 @@ def run_timed(binary, prm, cwd, ranks=1, env=None):
     return time.perf_counter() - start, out
 
 
+def run_variant(binary, scene, work, overrides, ranks=1, extra=""):
+    """Write @p work/run.prm (the committed prm/@p scene with
+    @p overrides, see variant_text, and the text @p extra after them), run
+    it in @p work; return (wall seconds, its summary.json). Exit codes 0
+    and 4 (a quantity outside its requested tolerance, which coarse
+    benchmark meshes give) are accepted; any other raises."""
+    prm = os.path.join(work, "run.prm")
+    with open(prm, "w") as f:
+        f.write(variant_text(os.path.join(PRM, scene), work, overrides) + extra)
+    wall, out = run_timed(binary, prm, work, ranks)
+    if out.returncode not in (0, 4):
+        raise RuntimeError(f"signorini {scene} failed ({out.returncode}):\n"
+                           f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
+    return wall, read_json(os.path.join(work, "summary.json"))
+
+
 def read_json(path):
     try:
         with open(path) as f:

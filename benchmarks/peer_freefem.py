@@ -28,7 +28,6 @@ Needs FreeFem++ (Debian package freefem++). Python 3 standard library only.
 """
 
 import argparse
-import json
 import os
 import shutil
 import statistics
@@ -75,21 +74,10 @@ def run_ours(binary, method, glob, local, radius, ranks, fields, work):
                  "Solver": {"Method": method}}
     if radius is not None:
         overrides["Mesh"]["Local refinement radius"] = radius
-    text = bench_common.variant_text(os.path.join(ROOT, "prm",
-                                                  "hertz_peer.prm"),
-                                     work, overrides)
-    if fields:
-        text += ("subsection Output\n  set Format = vtu\n"
-                 "  set Verbosity = quiet\nend\n")
-    prm = os.path.join(work, "run.prm")
-    with open(prm, "w") as f:
-        f.write(text)
-    wall, out = bench_common.run_timed(binary, prm, work, ranks)
-    if out.returncode not in (0, 4):
-        raise RuntimeError(f"signorini failed ({out.returncode}):\n"
-                           f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
-    with open(os.path.join(work, "summary.json")) as f:
-        s = json.load(f)
+    extra = ("subsection Output\n  set Format = vtu\n"
+             "  set Verbosity = quiet\nend\n") if fields else ""
+    wall, s = bench_common.run_variant(binary, "hertz_peer.prm", work,
+                                       overrides, ranks, extra)
     q = {k: v["value"] if isinstance(v, dict) else v
          for k, v in s["quantities"].items()}
     return wall, bench_common.iterations(s), q["hertz_p0"], s["mesh"]["dofs"]

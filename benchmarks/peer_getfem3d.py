@@ -88,17 +88,8 @@ def run_ours(binary, size, ranks, work):
     mesh = {"Global refinements": f[0], "Local refinements": f[1]}
     if len(f) > 2:
         mesh["Local refinement radius"] = f[2]
-    text = bench_common.variant_text(
-        os.path.join(ROOT, "prm", "hertz_sphere.prm"), work, {"Mesh": mesh})
-    prm = os.path.join(work, "run.prm")
-    with open(prm, "w") as out:
-        out.write(text)
-    wall, out = bench_common.run_timed(binary, prm, work, ranks)
-    # 4: a quantity outside the scene's Hertz tolerances (coarse meshes).
-    if out.returncode not in (0, 4):
-        raise RuntimeError(f"signorini {size} failed ({out.returncode}):\n"
-                           f"{out.stdout[-2000:]}\n{out.stderr[-2000:]}")
-    s = bench_common.read_json(os.path.join(work, "summary.json"))
+    wall, s = bench_common.run_variant(binary, "hertz_sphere.prm", work,
+                                       {"Mesh": mesh}, ranks)
     return (wall, bench_common.iterations(s),
             s["quantities"]["hertz_p0"]["value"], s["mesh"]["dofs"])
 

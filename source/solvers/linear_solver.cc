@@ -680,6 +680,13 @@ namespace Signorini
       check_failed = check_failed || state == SolverControl::failure;
       return state;
     };
+    const auto run_cg = [&]() {
+      const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
+        *amg.preconditioner, w, VectorType(b)};
+      SolverCG<VectorType> cg(control);
+      cg.connect(checked);
+      cg.solve(op, x, b, preconditioner);
+    };
     unsigned int wasted = 0;
     if (keep)
       {
@@ -690,13 +697,9 @@ namespace Signorini
         const unsigned int limit = control.max_steps();
         const unsigned int cap   = std::min(limit, 3 * amg.base_iterations + 20);
         control.set_max_steps(cap);
-        const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
-          *amg.preconditioner, w, VectorType(b)};
-        SolverCG<VectorType> cg(control);
-        cg.connect(checked);
         try
           {
-            cg.solve(op, x, b, preconditioner);
+            run_cg();
           }
         catch (...)
           {
@@ -720,13 +723,9 @@ namespace Signorini
         build();
       }
 
-    const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
-      *amg.preconditioner, w, VectorType(b)};
-    SolverCG<VectorType> cg(control);
-    cg.connect(checked);
     try
       {
-        cg.solve(op, x, b, preconditioner);
+        run_cg();
       }
     catch (...)
       {
