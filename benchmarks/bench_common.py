@@ -5,6 +5,7 @@ Writes variant parameter files (an 'include' of a committed scene followed by
 summary.json and describes the machine. Python 3 standard library only.
 """
 
+import argparse
 import datetime
 import hashlib
 import json
@@ -237,6 +238,19 @@ def run_timed(binary, prm, cwd, ranks=1, env=None):
     out = subprocess.run(cmd, cwd=cwd, env=full_env, capture_output=True,
                          text=True)
     return time.perf_counter() - start, out
+
+
+def peer_parser(doc, peer):
+    """The argument parser of a peer benchmark (its description the first
+    line of @p doc): --binary, --peer (default ../shared/peers/@p peer
+    beside the project) and --runs."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
+    parser.add_argument("--binary", default=os.path.join(ROOT, "build",
+                                                         "signorini"))
+    parser.add_argument("--peer", default=os.path.join(
+        ROOT, "..", "shared", "peers", peer))
+    parser.add_argument("--runs", type=int, default=3)
+    return parser
 
 
 def run_variant(binary, scene, work, overrides, ranks=1, extra=""):

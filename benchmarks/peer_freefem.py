@@ -27,7 +27,6 @@ Usage:
 Needs FreeFem++ (Debian package freefem++). Python 3 standard library only.
 """
 
-import argparse
 import os
 import shutil
 import statistics
@@ -84,12 +83,7 @@ def run_ours(binary, method, glob, local, radius, ranks, fields, work):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--binary", default=os.path.join(ROOT, "build",
-                                                         "signorini"))
-    parser.add_argument("--peer", default=os.path.join(
-        ROOT, "..", "shared", "peers", "freefem"))
-    parser.add_argument("--runs", type=int, default=3)
+    parser = bench_common.peer_parser(__doc__, "freefem")
     parser.add_argument("--methods", default="ipopt,newton-penalty",
                         help="comma separated; METHOD@RANKS runs that one "
                         "on RANKS MPI ranks (default --ranks)")

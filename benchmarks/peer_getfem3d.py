@@ -31,7 +31,6 @@ Usage:
 Needs apt-get install python3-getfem python3-scipy gmsh.
 """
 
-import argparse
 import csv
 import json
 import os
@@ -95,12 +94,7 @@ def run_ours(binary, size, ranks, work):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--binary", default=os.path.join(ROOT, "build",
-                                                         "signorini"))
-    parser.add_argument("--peer", default=os.path.join(
-        ROOT, "..", "shared", "peers", "getfem3d"))
-    parser.add_argument("--runs", type=int, default=3)
+    parser = bench_common.peer_parser(__doc__, "getfem3d")
     parser.add_argument("--levels", default="1,2")
     parser.add_argument("--sizes", default="2:4:0.06,2:5:0.06,2:6")
     parser.add_argument("--ranks", default="1,2",
