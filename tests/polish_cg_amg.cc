@@ -1,9 +1,10 @@
 // The active-set polish under CG + AMG with the kept, diagonally scaled
 // hierarchy, on the committed 3D scene prm/hertz_sphere.prm (27 882 DoFs,
-// interior point method, 2 load steps instead of its 1). Measured when written, one rank:
-// polish off 16 interior point iterations and 547 CG iterations; polish
-// without active-set updates 13 and 517; with the default (6 updates per
-// attempt under CG) 11 and 369. Checked, with margins for other BLAS
+// interior point method, 2 load steps instead of its 1, CG to 1e-6).
+// Measured when written, one rank: polish off 22 interior point iterations
+// and 558 CG iterations; polish without active-set updates 13 and 403;
+// with the default (6 updates per attempt under CG) 11 and 278 (with CG to
+// 1e-8: 16 and 547, 13 and 517, 11 and 369). Checked, with margins for other BLAS
 // kernels:
 // - the default polish gives the answers of the plain interior point
 //   method (p0, a, the contact force) to 1e-6, with at least 3 fewer
