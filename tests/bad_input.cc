@@ -381,4 +381,11 @@ main()
                               "  subsection Interior point\n    set Tolerance = 0\n"
                               "  end\nend"}}),
            out);
+  for (const std::string updates : {"some", "21"})
+    run_case("interior_point_polish_updates_" + updates,
+             scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\n"
+                                "  subsection Interior point\n"
+                                "    set Active-set polish updates = " + updates +
+                                  "\n  end\nend"}}),
+             out);
 }
