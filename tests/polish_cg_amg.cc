@@ -14,6 +14,10 @@
 // - updating the active set inside an attempt takes at most 0.85 times
 //   the CG iterations of ending the attempt at the first wrong node
 //   ('Active-set polish updates = 0');
+// - summary.json's 'linear solves' counts the predictor's and the
+//   corrector's solve of each interior point iteration (2 per iteration,
+//   more with inertia corrections; at most 4 checked) in the run without
+//   the polish;
 // - two ranks give the one-rank answers to 1e-7.
 
 #include "run_output.h"
@@ -49,6 +53,9 @@ main()
   const auto cg = [](const std::string &run) {
     return RunOutput::summary_sum(run, "linear iterations");
   };
+  const auto solves = [](const std::string &run) {
+    return RunOutput::summary_sum(run, "linear solves");
+  };
   const std::vector<std::string> answers = {"hertz_p0", "hertz_a", "contact_force_z"};
   const double against_off = RunOutput::largest_relative_difference("default", "off", answers);
   const double against_two =
@@ -59,7 +66,9 @@ main()
             << "; interior point iterations default " << iterations("default")
             << ", off " << iterations("off") << ", no updates "
             << iterations("no_updates") << "; CG iterations " << cg("default") << ", "
-            << cg("off") << ", " << cg("no_updates") << "; against off "
+            << cg("off") << ", " << cg("no_updates") << "; linear solves "
+            << solves("default") << ", " << solves("off") << ", " << solves("no_updates")
+            << "; against off "
             << against_off << ", two ranks " << against_two << ", penetration / h "
             << penetration << "\n";
   const bool ran = on == 0 && off == 0 && no_updates == 0 && two == 0;
@@ -74,6 +83,11 @@ main()
       << verdict(ran && penetration <= 1e-12) << "\n"
       << "active-set updates take at most 0.85 times the CG iterations of none: "
       << verdict(ran && cg("default") <= 0.85 * cg("no_updates")) << "\n"
+      << "the summary counts at least the predictor's and the corrector's solve "
+         "per interior point iteration, at most 4: "
+      << verdict(ran && solves("off") >= 2 * iterations("off") &&
+                 solves("off") <= 4 * iterations("off"))
+      << "\n"
       << "two ranks give the same answers to 1e-7: "
       << verdict(ran && against_two < 1e-7) << "\n";
 }

@@ -140,6 +140,7 @@ namespace Signorini
     record.backtracks        = stats.backtracks;
     record.regularized       = stats.regularized_steps;
     record.linear_iterations = stats.linear_iterations;
+    record.linear_solves     = stats.linear_solves;
     record.linear_fallbacks  = stats.linear_fallbacks;
     record.residual          = stats.residual;
     record.energy            = stats.evaluation.value;

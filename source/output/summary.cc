@@ -128,6 +128,7 @@ namespace Signorini
           o["backtracks"]        = s.backtracks;
           o["regularized steps"] = s.regularized;
           o["linear iterations"] = s.linear_iterations;
+          o["linear solves"]     = s.linear_solves;
           o["linear fallbacks"]  = s.linear_fallbacks;
           o["cuts before"]       = s.cuts_before;
           o["residual"]          = s.residual;

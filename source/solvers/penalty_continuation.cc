@@ -247,6 +247,7 @@ namespace Signorini
       result.last = solve_stage(mu, u, loose_tolerance);
       result.iterations += result.last.iterations;
       result.linear_iterations += result.last.linear_iterations;
+      result.linear_solves += result.last.linear_solves;
       result.linear_fallbacks += result.last.linear_fallbacks;
     };
     // The penalty forces at u (into result.forces) and their measure.

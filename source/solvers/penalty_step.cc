@@ -181,6 +181,7 @@ namespace Signorini
     // Over all stages and the tangents between them.
     stats.linear_iterations =
       result.linear_iterations + tangent_solves.linear_iterations;
+    stats.linear_solves = result.linear_solves + tangent_solves.linear_solves;
     stats.linear_fallbacks =
       result.linear_fallbacks + tangent_solves.linear_fallbacks;
     stats.converged         = result.converged;

@@ -51,7 +51,7 @@ namespace Signorini
   namespace Checkpoint
   {
     /// Version of the checkpoint format (state files and their order).
-    constexpr unsigned int format_version = 3; // 2: contact area and moment in the step record; 3: estimated errors of the quantities
+    constexpr unsigned int format_version = 4; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record
 
     /// What every state file starts with; read before anything is built.
     struct Header

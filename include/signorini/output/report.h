@@ -27,6 +27,7 @@ namespace Signorini
       unsigned int backtracks;
       unsigned int regularized;
       unsigned int linear_iterations;
+      unsigned int linear_solves = 0; // linear solves of the step (iterative or direct)
       unsigned int linear_fallbacks = 0; // iterative solves redone directly
       unsigned int cuts_before;
       double       residual;
@@ -52,6 +53,7 @@ namespace Signorini
         ar &linear_fallbacks &cuts_before &residual &energy &min_J &stages;
         ar &solver_status &active_nodes &penetration_ratio;
         ar &contact_force_vector &contact_moment &contact_area &has_pairs &pairs;
+        ar &linear_solves;
       }
     };
 

@@ -51,6 +51,7 @@ namespace Signorini
       unsigned int regularized_steps    = 0;
       unsigned int convexified_steps    = 0; // projected contact Hessian used
       unsigned int linear_iterations    = 0;
+      unsigned int linear_solves        = 0; // solves tried, failed ones too
       unsigned int linear_fallbacks     = 0;
       unsigned int linear_failures      = 0; // solves that gave no direction
       std::string  linear_message;            // why the last one failed
@@ -67,6 +68,7 @@ namespace Signorini
                          const std::string        &message)
       {
         linear_iterations += info.iterations;
+        ++linear_solves;
         linear_fallbacks += info.used_fallback;
         if (!ok)
           {

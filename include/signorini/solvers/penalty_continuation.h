@@ -40,6 +40,7 @@ namespace Signorini
     bool               capped        = false; // stopped at the largest mu
     unsigned int       retries       = 0;     // failed stages tried again
     unsigned int       linear_iterations = 0; // over all stages
+    unsigned int       linear_solves     = 0; // over all stages
     unsigned int       linear_fallbacks  = 0; // over all stages
     std::vector<PenaltyStage> stages;
     unsigned int       iterations        = 0; // over all stages
