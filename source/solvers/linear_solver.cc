@@ -600,7 +600,7 @@ namespace Signorini
     };
   } // namespace
 
-  unsigned int
+  void
   LinearSolver::solve_kept_amg(
     const MatrixType &H,
     VectorType       &x,
@@ -608,7 +608,8 @@ namespace Signorini
     SolverControl    &control,
     const std::function<SolverControl::State(const unsigned int,
                                              const double,
-                                             const VectorType &)> &check) const
+                                             const VectorType &)> &check,
+    unsigned int &wasted) const
   {
     // The scaling S = diag(H)^-1/2 and its inverse, as vectors of b's
     // layout (the matrix's locally owned rows): CG scales with them, and
@@ -687,7 +688,7 @@ namespace Signorini
       cg.connect(checked);
       cg.solve(op, x, b, preconditioner);
     };
-    unsigned int wasted = 0;
+    wasted = 0;
     if (keep)
       {
         // A kept hierarchy that no longer fits the matrix (the active-set
@@ -718,7 +719,7 @@ namespace Signorini
           {
             if (control.last_step() > 1.5 * amg.base_iterations + 5)
               amg.rebuild = true;
-            return 0;
+            return;
           }
         build();
       }
@@ -733,7 +734,6 @@ namespace Signorini
         throw;
       }
     amg.base_iterations = control.last_step();
-    return wasted;
   }
 
   bool
@@ -771,7 +771,7 @@ namespace Signorini
         };
         if (parameters.type == Parameters::Type::cg_amg &&
             parameters.keep_preconditioner)
-          wasted = solve_kept_amg(H, x, b, control, bounded);
+          solve_kept_amg(H, x, b, control, bounded, wasted);
         else if (parameters.type == Parameters::Type::cg_amg)
           {
             prepare_amg(H);

@@ -303,10 +303,11 @@ namespace Signorini
      * needed more than 1.5 times (plus 5) the CG iterations of the solve
      * right after the last build. A kept hierarchy gets 3 times (plus 20)
      * those iterations: a solve that needs more is started again with a
-     * new hierarchy, and the iterations of the first try are returned
-     * (0 otherwise). Throws what SolverCG throws.
+     * new hierarchy, and @p wasted gets the iterations of the first try
+     * (0 otherwise), also when the second try throws. Throws what SolverCG
+     * throws.
      */
-    unsigned int
+    void
     solve_kept_amg(const MatrixType &H,
                    VectorType       &x,
                    const VectorType &b,
@@ -314,7 +315,8 @@ namespace Signorini
                    const std::function<SolverControl::State(const unsigned int,
                                                             const double,
                                                             const VectorType &)>
-                     &check) const;
+                                 &check,
+                   unsigned int &wasted) const;
 
     /// The AMG hierarchy of the last iterative solve and the matrix it was
     /// built from: its address, pattern and values (a cache: solve() is
