@@ -9,7 +9,7 @@
 //   SSNP153 has 3.3e8 with Coulomb friction 0.3);
 // - frictionless, the state at t = 2 is the mirror image of the state at
 //   t = 1 (about x = 6): Rx(2) = -Rx(1) and R_vertical(2) = R_vertical(1)
-//   within 2%;
+//   within `mirror` (2% unless a test asks for less);
 // - while sliding (1.2 <= t <= 1.8) the mean of |Rx| / |R_vertical| is at
 //   most `mean_ratio` and its step-to-step jump at most `jump` of the
 //   vertical force;
@@ -45,7 +45,8 @@ namespace IroningCheck
         const double      mean_ratio,
         const double      jump,
         const double      node_penetration,
-        const bool        print_iterations = false)
+        const bool        print_iterations = false,
+        const double      mirror           = 0.02)
   {
     using RunOutput::read_csv;
     using RunOutput::verdict;
@@ -93,15 +94,18 @@ namespace IroningCheck
     const double mirror_v = std::abs(rv_2 - rv_1) / std::abs(rv_1);
     const double mean     = sliding > 0 ? ratio_sum / sliding : 1.;
     const auto   percent  = [](const double x) {
-      return std::to_string(static_cast<int>(std::lround(100. * x))) + "%";
+      std::ostringstream s; // 2%, 1.2%
+      s << std::setprecision(3) << 100. * x << "%";
+      return s.str();
     };
     out << "support force balances the contact force (1e-6): "
         << verdict(worst_balance < 1e-6) << "\n"
         << "vertical force at t = 1 in [2.5e8, 4.5e8]: "
         << verdict(std::abs(rv_1) > 2.5e8 && std::abs(rv_1) < 4.5e8) << "\n"
-        << "mirror: Rx(2) = -Rx(1) within 2%: " << verdict(mirror_x < 0.02) << "\n"
-        << "mirror: R" << vertical << "(2) = R" << vertical
-        << "(1) within 2%: " << verdict(mirror_v < 0.02) << "\n"
+        << "mirror: Rx(2) = -Rx(1) within " << percent(mirror) << ": "
+        << verdict(mirror_x < mirror) << "\n"
+        << "mirror: R" << vertical << "(2) = R" << vertical << "(1) within "
+        << percent(mirror) << ": " << verdict(mirror_v < mirror) << "\n"
         << "sliding (t in [1.2, 1.8], " << (sliding >= 20 ? "at least 20" : "FEWER THAN 20")
         << " steps): mean |Rx|/|R" << vertical << "| <= " << percent(mean_ratio) << ": "
         << verdict(mean <= mean_ratio) << "\n"
@@ -141,8 +145,9 @@ namespace IroningCheck
   }
 
   /// Run @p scene with the die's (body 1) and the block's (body 2) coarse
-  /// cells set to @p die and @p block (`Subdivisions` entries) into "run",
-  /// and write check()'s verdicts into "output".
+  /// cells set to @p die and @p block (`Subdivisions` entries) and the
+  /// parameter text @p extra appended into "run", and write check()'s
+  /// verdicts into "output".
   inline void
   run_and_check(const std::string &scene,
                 const std::string &die,
@@ -151,7 +156,9 @@ namespace IroningCheck
                 const double       mean_ratio,
                 const double       jump,
                 const double       node_penetration,
-                const bool         print_iterations = false)
+                const bool         print_iterations = false,
+                const std::string &extra            = "",
+                const double       mirror           = 0.02)
   {
     std::ofstream out("output");
     const auto    subdivisions = [](const unsigned int body, const std::string &cells) {
@@ -159,7 +166,7 @@ namespace IroningCheck
              "\n  subsection Geometry\n    set Subdivisions = " + cells + "\n  end\nend\n";
     };
     const int status =
-      RunOutput::run_scene("run", scene, subdivisions(1, die) + subdivisions(2, block));
-    check(out, status, vertical, mean_ratio, jump, node_penetration, print_iterations);
+      RunOutput::run_scene("run", scene, subdivisions(1, die) + subdivisions(2, block) + extra);
+    check(out, status, vertical, mean_ratio, jump, node_penetration, print_iterations, mirror);
   }
 } // namespace IroningCheck

@@ -171,18 +171,30 @@ namespace Signorini
             const Point<dim> x = position(p, u);
             hits.clear();
             tree.query(bgi::intersects(x), std::back_inserter(hits));
+            // The crest is judged along the inward direction of the face of
+            // the point's cell that it lies below, the nearest one where a
+            // cell has several faces on the target (a corner of the
+            // target surface: the die's arc meeting its side).
             bool           inside = false;
             double         phi    = 0.;
+            double         nearest = std::numeric_limits<double>::infinity();
             Tensor<1, dim> inward;
             values.clear();
             for (const auto &hit : hits)
               {
                 const auto &face = faces[hit.second];
-                if (!inside && face.in_cell(x))
+                if (face.in_cell(x))
                   {
+                    const double d  = face.depth(x, prm.stretch, prm.apex_depth);
+                    const double by = (d >= 0. ? d : std::numeric_limits<double>::max());
+                    if (!inside || by < nearest)
+                      {
+                        inward = Tensor<1, dim>();
+                        for (unsigned int v = 0; v < n_face_vertices; ++v)
+                          inward += face.opposite[v] - face.face[v];
+                        nearest = by;
+                      }
                     inside = true;
-                    for (unsigned int v = 0; v < n_face_vertices; ++v)
-                      inward += face.opposite[v] - face.face[v];
                   }
                 values.push_back(face.value(x, prm.stretch, prm.apex_depth));
                 phi += values.back();
@@ -258,17 +270,25 @@ namespace Signorini
         {
           hits.clear();
           tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
+          // A point penetrates only inside one of the target's cells: the
+          // layer of a face reaches past the face's ends (its ramp or its
+          // stretched simplices), which at a convex corner of the target
+          // surface lies outside the body; there Phi -> 0 as mu grows and
+          // the depth below the face's line would never fall.
           double depth = -1., h = 1.;
+          bool   inside = false;
           for (const auto &hit : hits)
             {
-              const double d = faces[hit.second].depth(x[k], prm.stretch, prm.apex_depth);
+              const auto  &face = faces[hit.second];
+              const double d    = face.depth(x[k], prm.stretch, prm.apex_depth);
               if (d >= 0. && (depth < 0. || d < depth))
                 {
                   depth = d;
                   h     = faces2[hit.second].h;
                 }
+              inside = inside || (d >= 0. && face.in_cell(x[k]));
             }
-          if (depth > 0.)
+          if (depth > 0. && inside)
             {
               worst = std::max(worst, depth / h);
               if (depths)
