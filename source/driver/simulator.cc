@@ -188,7 +188,14 @@ namespace Signorini
     VectorType   backup(solution);
     while (time < end_time * (1. - 1e-12))
       {
-        double t_new = std::min(time + dt, end_time);
+        // After a cut the steps still land on the requested times (the
+        // multiples of End time / Number of steps): a cut step is made up
+        // within its own interval, so that a path's corner (e.g. the end
+        // of an indentation before a slide) and the requested output times
+        // are not stepped over.
+        const double next_requested =
+          full_step * std::ceil(time / full_step * (1. + 1e-12) + 1e-9);
+        double t_new = std::min({time + dt, next_requested, end_time});
         if (end_time - t_new < 1e-9 * end_time)
           t_new = end_time;
         std::ostringstream what;
