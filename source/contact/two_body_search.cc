@@ -270,7 +270,8 @@ namespace Signorini
         {
           hits.clear();
           tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
-          // A point penetrates only inside one of the target's cells: the
+          // A point penetrates only inside one of the target's cells (its
+          // depth is still the smallest below any face that sees it): the
           // layer of a face reaches past the face's ends (its ramp or its
           // stretched simplices), which at a convex corner of the target
           // surface lies outside the body; there Phi -> 0 as mu grows and
@@ -286,7 +287,7 @@ namespace Signorini
                   depth = d;
                   h     = faces2[hit.second].h;
                 }
-              inside = inside || (d >= 0. && face.in_cell(x[k]));
+              inside = inside || face.in_cell(x[k]);
             }
           if (depth > 0. && inside)
             {
