@@ -344,6 +344,8 @@ namespace Signorini
       c.timing            = phase_times();
       report.cycles.push_back(c);
       estimate_errors();
+      if (running_summary)
+        running_summary();
     };
     if (!report.cycles.empty())
       estimate_errors(); // a restart: whether its cycles met the target
@@ -857,6 +859,14 @@ namespace Signorini
     // summary of an earlier run in the same folder.
     report.status = "running";
     summary();
+    running_summary = [this, incompressible_cells]() {
+      write_summary(report,
+                    parameters.refinement,
+                    problem->contact.get(),
+                    *solver,
+                    incompressible_cells,
+                    comm);
+    };
     // The first frame (HDF5 writes it here and now) failing is the run's
     // failed output, reported below like any other.
     std::string first_frame_error;

@@ -12,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -158,6 +159,11 @@ namespace Signorini
     VectorType                          failed_iterate;
     Report                              report;
     std::unique_ptr<LoadStepTable>      load_steps;
+    /// summary.json as the run stands, status "running" (collective):
+    /// written at the start and after every refinement cycle, so that a
+    /// run killed from outside (e.g. for lack of memory) keeps the cycles
+    /// it finished and their estimates.
+    std::function<void()> running_summary;
 
     // Where the run is: load time and step size, converged steps, and in
     // the refinement cycles whether the current mesh is refined and not
