@@ -67,6 +67,20 @@ namespace Signorini
       "it: doc/performance.md). "
       "auto: PETSc_Mumps, the fastest measured on 1 and 2 ranks from 1e4 "
       "to 5e5 DoFs (doc/performance.md, 'Linear solvers').");
+    prm.declare_entry("Direct solver memory limit",
+                      "0",
+                      Patterns::Integer(0, 100000000),
+                      "The most working memory MUMPS may allocate per MPI "
+                      "rank (PETSc_Mumps, the default direct solver), in "
+                      "MB, as its ICNTL(23); 0: no limit. A factorisation "
+                      "that needs more ends the run at once with status "
+                      "failed and a reason that says so, instead of the "
+                      "system killing the process for lack of memory. "
+                      "MUMPS reserves (without touching) its whole working "
+                      "array of that size at each factorisation, so the "
+                      "limit must fit in the process's address space "
+                      "(ulimit -v). An allocation that fails inside MUMPS "
+                      "ends the run the same way, limit or not.");
     prm.declare_entry("MUMPS ordering",
                       "pord",
                       Patterns::Selection("pord|amf|amd|qamd|scotch|auto"),
@@ -194,6 +208,7 @@ namespace Signorini
                        "has " + std::to_string(ranks) +
                          " ranks: use PETSc_Mumps, Amesos_Mumps, Amesos_Klu "
                          "or auto");
+    direct_memory_limit = prm.get_integer("Direct solver memory limit");
     const std::string ordering = prm.get("MUMPS ordering");
     mumps_ordering             = 7; // auto: MUMPS' own choice
     for (const auto &[name, code] : mumps_orderings)
@@ -331,7 +346,8 @@ namespace Signorini
         parameters.direct_solver == "PETSc_Cholmod" ?
           PETScDirectSolver::Package::cholmod :
           PETScDirectSolver::Package::mumps,
-        parameters.mumps_ordering);
+        parameters.mumps_ordering,
+        parameters.direct_memory_limit);
     const bool solved = direct.petsc->solve(
       H.trilinos_matrix(),
       x.trilinos_vector(),

@@ -1,3 +1,4 @@
+#include <signorini/input_error.h>
 #include <signorini/pattern_hash.h>
 #include <signorini/solvers/petsc_direct_solver.h>
 
@@ -180,7 +181,7 @@ namespace Signorini
     /// be set before the analysis: the ordering @p mumps_ordering and,
     /// with @p block > 1, the node blocks to order.
     void
-    set_mumps_controls(PC pc, const int mumps_ordering, const int block)
+    set_mumps_controls(PC pc, const int mumps_ordering, const int block, const int memory_mb)
     {
       // The factor exists from here on; its MUMPS controls must be
       // set before the analysis. ICNTL(28) = 1: sequential
@@ -214,6 +215,11 @@ namespace Signorini
       // (doc/performance.md).
       if (block > 1)
         check(MatMumpsSetIcntl(F, 15, -block), "MUMPS ICNTL(15)");
+      // ICNTL(23): the most working memory per rank, so that a matrix too
+      // large for the machine ends in MUMPS' own error (INFOG(1) = -19 or
+      // -9) instead of the kernel killing the process.
+      if (memory_mb > 0)
+        check(MatMumpsSetIcntl(F, 23, memory_mb), "MUMPS ICNTL(23)");
     }
 
     /// Why a factorisation failed, to follow the package's name.
@@ -261,9 +267,11 @@ namespace Signorini
   };
 
   PETScDirectSolver::PETScDirectSolver(const Package package,
-                                       const int     mumps_ordering)
+                                       const int     mumps_ordering,
+                                       const int     memory_limit)
     : package(package)
     , mumps_ordering(mumps_ordering)
+    , memory_limit(memory_limit)
   {
     // CHOLMOD picks a simplicial LDL^T for small or very sparse matrices,
     // which factorises indefinite matrices without complaint; the
@@ -332,6 +340,11 @@ namespace Signorini
           return false;
         if (!solve_factorized(x, b, comm, message))
           return false;
+      }
+    catch (const SolveFailure &)
+      {
+        state.reset();
+        throw;
       }
     catch (const std::exception &e)
       {
@@ -456,7 +469,7 @@ namespace Signorini
     PC pc = nullptr;
     check(KSPGetPC(s.ksp, &pc), "KSPGetPC");
     if (package == Package::mumps)
-      set_mumps_controls(pc, mumps_ordering, s.block);
+      set_mumps_controls(pc, mumps_ordering, s.block, memory_limit);
     // CHOLMOD's supernodal Cholesky stops at the first pivot that
     // is not positive, as a PETSc error (PETSC_ERR_MAT_CH_ZRPVT),
     // not as the factor's error type; PETSc must not print it.
@@ -484,9 +497,28 @@ namespace Signorini
       }
     else
       negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;
+    // MUMPS' memory errors: -13 (an allocation failed), -19 (more than
+    // ICNTL(23) needed). (-8 and -9, a workspace too small for the
+    // pivots of this matrix, stay ordinary failures: a shifted diagonal
+    // may factorise.)
+    PetscInt status = 0;
+    if (package == Package::mumps && !not_definite)
+      check(MatMumpsGetInfog(F, 1, &status), "MUMPS INFOG(1)");
+    const bool memory = status == -13 || status == -19;
     if (!on_all_ranks(comm, error == MAT_FACTOR_NOERROR && !not_definite))
       {
         state.reset();
+        // Fatal: a smaller step or a shifted diagonal needs as much memory.
+        if (!on_all_ranks(comm, !memory))
+          throw SolveFailure(name(package) +
+                    ": the factorisation needs more memory than MUMPS may use (" +
+                    (memory_limit > 0 ? "at most " + std::to_string(memory_limit) +
+                                          " MB per rank, Solver > Linear solver > "
+                                          "Direct solver memory limit" :
+                                        "no limit set") +
+                    "; MUMPS error " + std::to_string(status) +
+                    "): use Solver > Linear solver > Type = cg-amg, or more "
+                    "memory per rank");
         message = name(package) + factorization_failure(not_definite, error);
         return false;
       }

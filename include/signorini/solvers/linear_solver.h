@@ -84,6 +84,9 @@ namespace Signorini
       /// MUMPS' fill-reducing ordering, as its ICNTL(7) code (also given
       /// to Ipopt's MUMPS as mumps_pivot_order).
       int          mumps_ordering = 4;
+      /// The most working memory MUMPS may allocate per rank, in MB, as
+      /// its ICNTL(23); 0: no limit.
+      int          direct_memory_limit = 0;
       double       relative_tolerance = 1e-8;
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;

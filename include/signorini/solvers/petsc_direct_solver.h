@@ -42,7 +42,8 @@ namespace Signorini
       cholmod
     };
 
-    PETScDirectSolver(Package package, int mumps_ordering);
+    /// @p memory_limit: MUMPS' ICNTL(23) in MB per rank, 0 for none.
+    PETScDirectSolver(Package package, int mumps_ordering, int memory_limit = 0);
     ~PETScDirectSolver();
 
     /**
@@ -142,6 +143,7 @@ namespace Signorini
 
     Package                package;
     int                    mumps_ordering;
+    int                    memory_limit;
     std::unique_ptr<State> state;
     unsigned int           n_symbolic = 0;
     unsigned int           n_numeric  = 0;
