@@ -17,11 +17,7 @@
 #include <string>
 #include <thread>
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
-
-extern char **environ;
 
 using RunOutput::verdict;
 
@@ -38,18 +34,7 @@ main()
                               "  set Maximum level    = 20\n"
                               "end\n"
                               "subsection Output\n  set Format = none\nend\n";
-  std::vector<std::string> args = {SIGNORINI_EXECUTABLE, "run.prm"};
-  std::vector<char *>      argv;
-  for (auto &a : args)
-    argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+  const pid_t pid = RunOutput::start_quietly({SIGNORINI_EXECUTABLE, "run.prm"});
 
   // Wait (at most 120 s) for cycles 0 to 2 in the CSV, or for the end.
   bool seen = false, ended = false;

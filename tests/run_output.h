@@ -15,7 +15,11 @@
 #include <utility>
 #include <vector>
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
+
+extern char **environ;
 
 namespace RunOutput
 {
@@ -317,5 +321,23 @@ namespace RunOutput
       text += buffer;
     const int status = pipe ? pclose(pipe) : -1;
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+  }
+  /// Start the command @p args (searched in PATH) with its output
+  /// discarded, without waiting for it; returns its pid.
+  inline pid_t
+  start_quietly(const std::vector<std::string> &args)
+  {
+    std::vector<char *> argv;
+    for (const auto &a : args)
+      argv.push_back(const_cast<char *>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid = -1;
+    posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    return pid;
   }
 } // namespace RunOutput
