@@ -216,8 +216,8 @@ namespace Signorini
       if (block > 1)
         check(MatMumpsSetIcntl(F, 15, -block), "MUMPS ICNTL(15)");
       // ICNTL(23): the most working memory per rank, so that a matrix too
-      // large for the machine ends in MUMPS' own error (INFOG(1) = -19 or
-      // -9) instead of the kernel killing the process.
+      // large for the machine ends in MUMPS' own error (INFOG(1) = -19)
+      // instead of the kernel killing the process.
       if (memory_mb > 0)
         check(MatMumpsSetIcntl(F, 23, memory_mb), "MUMPS ICNTL(23)");
     }
@@ -510,15 +510,15 @@ namespace Signorini
         state.reset();
         // Fatal: a smaller step or a shifted diagonal needs as much memory.
         if (!on_all_ranks(comm, !memory))
-          throw SolveFailure(name(package) +
-                    ": the factorisation needs more memory than MUMPS may use (" +
-                    (memory_limit > 0 ? "at most " + std::to_string(memory_limit) +
-                                          " MB per rank, Solver > Linear solver > "
-                                          "Direct solver memory limit" :
-                                        "no limit set") +
-                    "; MUMPS error " + std::to_string(status) +
-                    "): use Solver > Linear solver > Type = cg-amg, or more "
-                    "memory per rank");
+          throw SolveFailure(
+            name(package) +
+            (status == -19 ?
+               ": the factorisation needs more memory than MUMPS may use (at most " +
+                 std::to_string(memory_limit) +
+                 " MB per rank, Solver > Linear solver > Direct solver memory limit)" :
+               ": MUMPS could not allocate the memory of the factorisation (its "
+               "error " + std::to_string(status) + ")") +
+            ": use Solver > Linear solver > Type = cg-amg, or more memory per rank");
         message = name(package) + factorization_failure(not_definite, error);
         return false;
       }
