@@ -82,13 +82,6 @@ namespace
     return {whole, rows};
   }
 
-  /// Start @p argv quietly; returns its pid.
-  pid_t
-  start(const std::vector<std::string> &args)
-  {
-    return RunOutput::start_quietly(args);
-  }
-
   int
   wait_for(const pid_t pid)
   {
@@ -133,7 +126,7 @@ namespace
       << "set Output directory = " << name << "\n"
       << scene_edits << (two_ranks ? two_rank_edits : "")
       << "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n";
-    Launched run{start(command(name, two_ranks)), {}, {}};
+    Launched run{RunOutput::start_quietly(command(name, two_ranks)), {}, {}};
     // On 2 ranks the signal goes to the ranks themselves (mpirun's
     // children), as a batch system delivers it: Open MPI's own handling of
     // a signal to mpirun kills the ranks 1 s later, or ignores a signal
@@ -223,7 +216,7 @@ namespace
         again.pop_back();
         again.push_back("--restart");
         again.push_back(name);
-        restarted = wait_for(start(again)) == 0 &&
+        restarted = wait_for(RunOutput::start_quietly(again)) == 0 &&
                     json_status(name + "/summary.json") == "converged";
       }
     out << name << ": exit code as its status says: " << verdict(code_ok)

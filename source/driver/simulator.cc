@@ -344,8 +344,7 @@ namespace Signorini
       c.timing            = phase_times();
       report.cycles.push_back(c);
       estimate_errors();
-      if (running_summary)
-        running_summary();
+      summary(); // a run killed from outside keeps its finished cycles
     };
     if (!report.cycles.empty())
       estimate_errors(); // a restart: whether its cycles met the target
@@ -847,7 +846,9 @@ namespace Signorini
         static_cast<unsigned int>(problem->incompressibility->cells().size()) :
         0u,
       comm);
-    auto summary = [&]() {
+    // summary.json as the report stands; also after every refinement
+    // cycle (refinement_cycles()).
+    summary = [this, incompressible_cells]() {
       write_summary(report,
                     parameters.refinement,
                     problem->contact.get(),
@@ -859,14 +860,6 @@ namespace Signorini
     // summary of an earlier run in the same folder.
     report.status = "running";
     summary();
-    running_summary = [this, incompressible_cells]() {
-      write_summary(report,
-                    parameters.refinement,
-                    problem->contact.get(),
-                    *solver,
-                    incompressible_cells,
-                    comm);
-    };
     // The first frame (HDF5 writes it here and now) failing is the run's
     // failed output, reported below like any other.
     std::string first_frame_error;

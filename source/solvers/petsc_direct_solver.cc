@@ -486,9 +486,15 @@ namespace Signorini
     MatFactorError error = MAT_FACTOR_NOERROR;
     if (!not_definite)
       check(MatFactorGetError(F, &error), "MatFactorGetError");
+    // MUMPS' status INFOG(1): its memory errors are -13 (an allocation
+    // failed) and -19 (more than ICNTL(23) needed). (-8 and -9, a
+    // workspace too small for the pivots of this matrix, stay ordinary
+    // failures: a shifted diagonal may factorise.)
+    PetscInt status = 0;
     if (package == Package::mumps && !not_definite)
       {
         PetscInt value = 0;
+        check(MatMumpsGetInfog(F, 1, &status), "MUMPS INFOG(1)");
         check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
         negative = static_cast<int>(value);
         check(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
@@ -497,13 +503,6 @@ namespace Signorini
       }
     else
       negative = (not_definite || error != MAT_FACTOR_NOERROR) ? 1 : 0;
-    // MUMPS' memory errors: -13 (an allocation failed), -19 (more than
-    // ICNTL(23) needed). (-8 and -9, a workspace too small for the
-    // pivots of this matrix, stay ordinary failures: a shifted diagonal
-    // may factorise.)
-    PetscInt status = 0;
-    if (package == Package::mumps && !not_definite)
-      check(MatMumpsGetInfog(F, 1, &status), "MUMPS INFOG(1)");
     const bool memory = status == -13 || status == -19;
     if (!on_all_ranks(comm, error == MAT_FACTOR_NOERROR && !not_definite))
       {

@@ -159,11 +159,11 @@ namespace Signorini
     VectorType                          failed_iterate;
     Report                              report;
     std::unique_ptr<LoadStepTable>      load_steps;
-    /// summary.json as the run stands, status "running" (collective):
-    /// written at the start and after every refinement cycle, so that a
-    /// run killed from outside (e.g. for lack of memory) keeps the cycles
-    /// it finished and their estimates.
-    std::function<void()> running_summary;
+    /// Write summary.json as the report stands (collective): at the start
+    /// (status "running"), after every refinement cycle, so that a run
+    /// killed from outside (e.g. for lack of memory) keeps the cycles it
+    /// finished and their estimates, and at the end. Set in run().
+    std::function<void()> summary;
 
     // Where the run is: load time and step size, converged steps, and in
     // the refinement cycles whether the current mesh is refined and not
