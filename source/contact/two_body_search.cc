@@ -162,8 +162,6 @@ namespace Signorini
       const auto tree = face_tree(faces, 0.);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
       bool                                                   ok = true;
-      Vector<double>      g(IndicatorFace<dim>::n_variables);
-      FullMatrix<double>  H(IndicatorFace<dim>::n_variables, IndicatorFace<dim>::n_variables);
       std::vector<double> values; // Phi of each hit face term
       for (const auto *list : {&node_points, &points})
         for (const auto &p : *list)
@@ -212,11 +210,7 @@ namespace Signorini
             Tensor<1, dim> gradient;
             for (unsigned int k = 0; k < hits.size(); ++k)
               if (values[k] > 0.)
-                {
-                  faces[hits[k].second].derivatives(x, prm.stretch, g, H, prm.apex_depth);
-                  for (unsigned int c = 0; c < dim; ++c)
-                    gradient[c] += g(c);
-                }
+                gradient += faces[hits[k].second].point_gradient(x, prm.stretch, prm.apex_depth);
             if (gradient * inward < 0.)
               {
                 ok = false;

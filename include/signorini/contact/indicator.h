@@ -130,7 +130,8 @@ namespace Signorini
        * Value, gradient and Hessian with respect to the n_variables
        * variables (x first, then face, then opposite vertices), by
        * forward-mode automatic differentiation (nested Sacado SFad, sized at
-       * compile time: no heap allocation).
+       * compile time: no heap allocation) in the few linear combinations
+       * of the variables that the term depends on (2D 6, 3D 12 or 15).
        */
       double
       derivatives(const Point<dim>  &x,
@@ -138,6 +139,13 @@ namespace Signorini
                   Vector<double>     &gradient,
                   FullMatrix<double> &hessian,
                   const double        apex_depth = 1.) const;
+
+      /// The gradient with respect to the point x alone (the first dim
+      /// entries of derivatives()'s gradient, at a fraction of the cost).
+      Tensor<1, dim>
+      point_gradient(const Point<dim> &x,
+                     const double      stretch,
+                     const double      apex_depth = 1.) const;
 
       /**
        * Whether x lies strictly inside the cell spanned by the face and
