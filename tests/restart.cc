@@ -8,7 +8,8 @@
 // - Ipopt with the rigid foundation's constraints (warm-started multipliers);
 // - the interior point method (the same, on 1 and 2 ranks), also with
 //   incompressible bodies (the augmented Lagrangian's multipliers);
-// - adaptive refinement cycles, restarted in the load path and in a cycle.
+// - adaptive refinement cycles, restarted in the load path and in a cycle;
+// - the estimate from a coarser mesh (2 ranks), restarted on either mesh.
 // Writing checkpoints does not change the run. Bad restarts exit 2 with a
 // message: a changed mesh entry, another number of ranks, no checkpoint,
 // a state file of rank 1 cut short (on 2 ranks, without a hang).
@@ -139,6 +140,14 @@ main()
               {0, 2, 3, 4});
   // Two ranks.
   check_scene(out, "ranks", "hertz_block.prm", four_steps + klu, {2}, mpirun);
+  // The estimate from a coarser mesh, on 2 ranks: restarted in the load
+  // path on the coarsened mesh (1: the cells to refine back come from the
+  // checkpoint) and on the scene's mesh before its solve (5).
+  check_scene(out, "coarser", "hertz_block.prm",
+              four_steps + klu +
+                "subsection Mesh refinement\n"
+                "  set Estimate from a coarser mesh = true\nend\n",
+              {1, 5}, mpirun);
 
   // A restart that cannot be honoured.
   {

@@ -48,7 +48,11 @@ namespace Signorini
 
     restart_folder = restart_checkpoint;
     if (!restart_folder.empty())
-      mesh_as_built = Checkpoint::read_header(restart_folder).mesh_as_built;
+      {
+        const auto header = Checkpoint::read_header(restart_folder);
+        mesh_as_built     = header.mesh_as_built;
+        refined_back      = header.refined_back;
+      }
     scene = std::make_unique<Scene<dim>>(
       parameters, comm,
       mesh_as_built ? "" : Checkpoint::mesh_file(restart_folder));
@@ -65,6 +69,20 @@ namespace Signorini
                                         contact->contact_boundary_id(),
                                         refinement,
                                         contact->band_distance());
+      }
+    if (refinement.coarser_mesh_estimate && mesh_as_built)
+      {
+        // The load path on the coarser mesh; refinement_cycles() refines
+        // these cells back. Both meshes count as built: a restart repeats
+        // the same steps, which number the cells and DoFs the same way (a
+        // mesh loaded from the checkpoint would not, after coarsening).
+        coarsened_parents = Refinement::coarsen_once(scene->triangulation);
+        if (refined_back)
+          {
+            Refinement::mark_cells(scene->triangulation, coarsened_parents);
+            scene->triangulation.prepare_coarsening_and_refinement();
+            scene->triangulation.execute_coarsening_and_refinement();
+          }
       }
     postprocessor = std::make_unique<Postprocessor<dim>>(parameters.postprocess,
                                                          scene->dof_handler,
@@ -322,7 +340,8 @@ namespace Signorini
   void
   Simulator<dim>::refinement_cycles(const Timer &run_timer)
   {
-    const unsigned int n_cycles = parameters.refinement.cycles;
+    const bool         back_to_scene_mesh = parameters.refinement.coarser_mesh_estimate;
+    const unsigned int n_cycles = back_to_scene_mesh ? 1 : parameters.refinement.cycles;
     if (n_cycles == 0)
       return;
     const double end_time     = parameters.load_stepping.end_time;
@@ -379,23 +398,30 @@ namespace Signorini
             }
             TimerOutput::Scope scope(*timer, "refinement");
             scene->solution_ghosted = scene->solution;
-            refined_cells = Refinement::estimate_and_mark(scene->triangulation,
-                                                          *scene->mapping,
-                                                          scene->dof_handler,
-                                                          problem->contact.get(),
-                                                          scene->solution_ghosted,
-                                                          parameters.refinement);
+            refined_cells =
+              back_to_scene_mesh ?
+                Refinement::mark_cells(scene->triangulation, coarsened_parents) :
+                Refinement::estimate_and_mark(scene->triangulation,
+                                              *scene->mapping,
+                                              scene->dof_handler,
+                                              problem->contact.get(),
+                                              scene->solution_ghosted,
+                                              parameters.refinement);
             scene->refine_and_transfer(problem->contact.get(), end_time);
             setup_dofs();
-            mesh_as_built = false;
+            if (back_to_scene_mesh)
+              refined_back = true;
+            else
+              mesh_as_built = false;
             // A new mesh: what an interruption of this cycle's solve
             // saves and a restart continues from.
             mesh_ready = true;
             snapshot();
             checkpoint(run_timer, false);
           }
-        pcout << "Refinement cycle " << cycle << ": " << refined_cells
-              << " cells refined, " << report.n_cells << " cells, "
+        pcout << "Refinement cycle " << cycle
+              << (back_to_scene_mesh ? " (back to the scene's mesh)" : "") << ": "
+              << refined_cells << " cells refined, " << report.n_cells << " cells, "
               << report.n_dofs << " DoFs";
         if (problem->contact)
           pcout << ", " << report.contact_nodes << " contact nodes";
@@ -490,6 +516,7 @@ namespace Signorini
     resume.step          = step;
     resume.mesh_ready    = mesh_ready;
     resume.mesh_as_built = mesh_as_built;
+    resume.refined_back  = refined_back;
     resume.refined_cells = refined_cells;
     // The step and cycle records only grow from here: keep their counts,
     // not a copy of them at every step.
@@ -614,6 +641,7 @@ namespace Signorini
     header.parameter_file = report.parameter_file;
     header.parameters     = used_parameters;
     header.mesh_as_built  = resume.mesh_as_built;
+    header.refined_back   = resume.refined_back;
     Report saved          = resumed_report();
     saved.timing          = run_times(run_timer);
     {
@@ -762,6 +790,7 @@ namespace Signorini
     else
       scene->load_vectors();
     mesh_as_built = header.mesh_as_built;
+    refined_back  = header.refined_back;
 
     report.take_record(saved);
     report.restarted_from.push_back(folder);

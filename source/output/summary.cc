@@ -181,6 +181,7 @@ namespace Signorini
       r["coarsen fraction"]         = refinement_parameters.coarsen_fraction;
       r["maximum level"]            = refinement_parameters.max_level;
       r["contact band refinements"] = refinement_parameters.band_refinements;
+      r["estimate from a coarser mesh"] = refinement_parameters.coarser_mesh_estimate;
       Json cycles = Json::array();
       for (const auto &c : report.cycles)
         {
@@ -320,7 +321,8 @@ namespace Signorini
       j["incompressibility constraints"] = incompressibility_constraints;
     step_solver.write_summary(j);
     j["steps"] = steps_json<dim>(report, iterations, contact != nullptr);
-    if (refinement_parameters.cycles > 0 || refinement_parameters.band_refinements > 0)
+    if (refinement_parameters.cycles > 0 || refinement_parameters.band_refinements > 0 ||
+        refinement_parameters.coarser_mesh_estimate)
       add_refinement_entries(j["mesh refinement"], report, refinement_parameters,
                              iterations);
     j["quantities"] = quantities_json(report);

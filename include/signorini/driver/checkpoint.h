@@ -51,7 +51,7 @@ namespace Signorini
   namespace Checkpoint
   {
     /// Version of the checkpoint format (state files and their order).
-    constexpr unsigned int format_version = 4; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record
+    constexpr unsigned int format_version = 5; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back
 
     /// What every state file starts with; read before anything is built.
     struct Header
@@ -69,13 +69,18 @@ namespace Signorini
       /// Otherwise the mesh is loaded from the checkpoint (p4est) and the
       /// vectors are transferred cell by cell.
       bool mesh_as_built = true;
+      /// With 'Estimate from a coarser mesh' the mesh counts as built
+      /// throughout: the restarted run coarsens it again, and, if this
+      /// flag is set, refines it back (the same history, hence the same
+      /// numbering).
+      bool refined_back = false;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
         ar &format &dimension &n_ranks &sequence &parameter_file &parameters;
-        ar &mesh_as_built;
+        ar &mesh_as_built &refined_back;
       }
     };
 

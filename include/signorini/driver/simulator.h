@@ -135,6 +135,7 @@ namespace Signorini
       unsigned int step = 0;
       bool         mesh_ready = false;   // a refined mesh, not yet solved
       bool         mesh_as_built = true; // no refinement cycle yet
+      bool         refined_back  = false; // coarser-mesh estimate, cycle 1
       unsigned int refined_cells = 0;    // flagged to make that mesh
       Report       report;               // without steps and cycles
       std::size_t  n_steps = 0, n_cycles = 0; // of report's, at this point
@@ -174,6 +175,11 @@ namespace Signorini
     bool         mesh_as_built = true;
     unsigned int refined_cells = 0;
     std::string  activity = "setup"; // for the message of an interruption
+    /// With 'Estimate from a coarser mesh': the cells coarsened at the
+    /// start (Refinement::coarsen_once()), and whether they are refined
+    /// back (cycle 1).
+    std::vector<CellId::binary_type> coarsened_parents;
+    bool                             refined_back = false;
 
     ResumePoint                   resume;
     std::string                   restart_folder;

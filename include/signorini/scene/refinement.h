@@ -8,6 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
+#include <deal.II/grid/cell_id.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
@@ -35,6 +36,24 @@ namespace Signorini
                         const types::boundary_id                    contact_id,
                         const RefinementParameters                 &parameters,
                         const std::function<double(const Point<dim> &)> &gap);
+
+    /**
+     * Coarsen every cell once where its siblings allow (all of them
+     * active; p4est's balance may keep some), and return, the same on
+     * every rank and sorted, the CellIds (binary) of the parents that
+     * were candidates: refining the active ones among them
+     * (mark_cells()) restores the mesh. Collective.
+     */
+    template <int dim>
+    std::vector<CellId::binary_type>
+    coarsen_once(parallel::distributed::Triangulation<dim> &triangulation);
+
+    /// Flag for refinement the locally owned active cells whose id is in
+    /// @p cells (sorted); returns the number flagged on all ranks.
+    template <int dim>
+    unsigned int
+    mark_cells(parallel::distributed::Triangulation<dim> &triangulation,
+               const std::vector<CellId::binary_type>     &cells);
 
     /// Kelly's indicator of the displacement @p u (ghosted), per active
     /// cell (values on the locally owned cells).

@@ -48,6 +48,11 @@ namespace Signorini
     /// relative error at most target_accuracy; 0: run all the cycles.
     double                   target_accuracy = 0.;
     std::vector<std::string> target_quantities;
+    /// Estimate the errors of a run without cycles from a second, coarser
+    /// mesh: solve the load path with every cell coarsened once (where
+    /// its siblings allow), then refine those cells back and solve the
+    /// final load on the scene's own mesh (refinement cycle 1).
+    bool coarser_mesh_estimate = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
