@@ -16,8 +16,8 @@
 //   penalty path's tolerance), and p0's estimate within a factor 3 of its
 //   distance to the converged model (p0 = 6.920603 at 1 623 318 DoFs,
 //   prm/hertz_sphere_block_large.prm, doc/performance.md).
-// - With refinement cycles as well: bad input (exit code 2) naming the
-//   entry.
+// - With refinement cycles as well, or on a mesh without refinement
+//   levels (nothing to coarsen): bad input (exit code 2) naming the entry.
 
 #include "run_output.h"
 
@@ -102,15 +102,23 @@ main()
   check(out, "two_bodies_3d", "hertz_sphere_block.prm", 6.920603, 0., 1e-5,
         "mpirun --allow-run-as-root --oversubscribe -np 2 ");
 
-  const auto [code, text] = RunOutput::execute(
-    std::string("printf 'include ") + SIGNORINI_SOURCE_DIR +
-    "/prm/default.prm\nset Output directory = cycles\n"
-    "subsection Mesh refinement\n  set Number of cycles = 2\n"
-    "  set Estimate from a coarser mesh = true\nend\n' > cycles.prm && " +
-    SIGNORINI_EXECUTABLE + " cycles.prm 2>&1");
-  const bool names_entry = text.find("Estimate from a coarser mesh") != std::string::npos;
-  out << "with refinement cycles: exit code " << code
-      << ", the message names the entry: " << verdict(names_entry) << "\n";
-  if (!names_entry)
-    std::cerr << text;
+  for (const auto &[name, edit] :
+       {std::pair<std::string, std::string>{"with refinement cycles",
+                                            "subsection Mesh refinement\n"
+                                            "  set Number of cycles = 2\nend\n"},
+        {"on a mesh without refinement levels",
+         "subsection Mesh\n  set Global refinements = 0\n"
+         "  set Local refinements = 0\nend\n"}})
+    {
+      const auto [code, text] = RunOutput::execute(
+        std::string("printf 'include ") + SIGNORINI_SOURCE_DIR +
+        "/prm/default.prm\nset Output directory = bad\n" + edit +
+        "subsection Mesh refinement\n  set Estimate from a coarser mesh = true\nend\n"
+        "' > bad.prm && " + SIGNORINI_EXECUTABLE + " bad.prm 2>&1");
+      const bool names_entry = text.find("Estimate from a coarser mesh") != std::string::npos;
+      out << name << ": exit code " << code
+          << ", the message names the entry: " << verdict(names_entry) << "\n";
+      if (!names_entry)
+        std::cerr << text;
+    }
 }

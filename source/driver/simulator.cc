@@ -77,6 +77,12 @@ namespace Signorini
         // the same steps, which number the cells and DoFs the same way (a
         // mesh loaded from the checkpoint would not, after coarsening).
         coarsened_parents = Refinement::coarsen_once(scene->triangulation);
+        if (coarsened_parents.empty())
+          throw InputError("Mesh refinement > Estimate from a coarser mesh",
+                           "no cell of the mesh can be coarsened: it has no "
+                           "refinement level (Mesh > Global refinements and "
+                           "Local refinements are 0, or the mesh file's cells "
+                           "are all coarse cells)");
         if (refined_back)
           {
             Refinement::mark_cells(scene->triangulation, coarsened_parents);
