@@ -10,6 +10,9 @@
 //   within a factor 3;
 // - a sequence with scatter about its trend (0.1% of the first error) is
 //   not estimated below its scatter;
+// - the oldest of four meshes off the sequence (a jump 34 times the next
+//   change, or on the other side of the limit while the last three
+//   converge monotonically): the last three meshes give the estimate;
 // - a repeated mesh size (a cycle that refined no cell below the smallest)
 //   counts once, with its later value; non-finite values are skipped; one
 //   mesh gives no estimate;
@@ -131,6 +134,24 @@ main()
     out << "one mesh, no estimate: "
         << verdict(!ErrorEstimate::estimate({1.}, {2.}).valid) << "\n";
   }
+  // The oldest of four meshes off the sequence: by a jump no order up to
+  // 3 explains (a mesh too coarse for the contact zone), or on the other
+  // side of the limit while the last three converge monotonically; the
+  // last three give the estimate (order 1 here: exact).
+  for (const auto &[name, first] :
+       {std::pair<const char *, double>{"a jump 34x the next change", 1.9},
+        {"the other side of the limit", 0.98}})
+    {
+      const auto                h = halved(4);
+      const std::vector<double> q = {first, 1.05, 1.025, 1.0125};
+      const auto                e = ErrorEstimate::estimate(h, q);
+      const double              effectivity = e.error / 0.0125;
+      out << "oldest of four meshes off, " << name << ": uses " << e.meshes
+          << ", effectivity " << effectivity << "\n"
+          << "  the last three's estimate: "
+          << verdict(e.meshes == 3 && std::abs(effectivity - 1.) < 1e-12) << "\n";
+    }
+
   {
     std::vector<std::vector<Quantity>> per_mesh(3);
     const std::vector<double>          h = {1., 0.5, 0.25};

@@ -64,21 +64,22 @@ namespace Signorini
         return e;
       e.valid = true;
       e.limit = q.back();
+      // Richardson's estimate from the last two or three meshes, order 1.
+      const auto richardson = [&](const std::size_t meshes) {
+        const double r = h[n - 2] / h[n - 1];
+        double       d = std::abs(q[n - 1] - q[n - 2]);
+        // The previous difference, reduced as an order 2 sequence would
+        // reduce it, bounds the estimate from below.
+        if (meshes == 3)
+          d = std::max(d, std::abs(q[n - 2] - q[n - 3]) / (r * r));
+        e.error  = d / (r - 1.);
+        e.order  = 1.;
+        e.limit  = q.back();
+        e.meshes = meshes;
+        return e;
+      };
       if (n < 4)
-        {
-          const double r  = h[n - 2] / h[n - 1];
-          const double p  = 1.;
-          const double rp = std::pow(r, p);
-          double       d  = std::abs(q[n - 1] - q[n - 2]);
-          // The previous difference, reduced as an order 2 sequence
-          // would reduce it, bounds the estimate from below.
-          if (n == 3)
-            d = std::max(d, std::abs(q[n - 2] - q[n - 3]) / (r * r));
-          e.error  = d / (rp - 1.);
-          e.order  = p;
-          e.meshes = n;
-          return e;
-        }
+        return richardson(n);
       const std::vector<double> h4(h.end() - 4, h.end()), q4(q.end() - 4, q.end());
       double                    best = std::numeric_limits<double>::max();
       for (unsigned int k = 0; k <= 50; ++k)
@@ -92,6 +93,17 @@ namespace Signorini
               e.limit = limit;
             }
         }
+      // The oldest of the four meshes does not belong to the sequence when
+      // its change is one no order up to 3 explains (more than 8 times the
+      // next: a mesh too coarse to resolve the contact zone), or when the
+      // last three converge monotonically (each change smaller than the
+      // one before, of the same sign) and the fit misses them by more than
+      // their last change: the last three meshes then give the estimate.
+      const double d0 = q[n - 3] - q[n - 4], d1 = q[n - 2] - q[n - 3],
+                   d2 = q[n - 1] - q[n - 2];
+      if (std::abs(d0) > 8. * std::abs(d1) ||
+          (d1 * d2 > 0. && std::abs(d2) < std::abs(d1) && best > std::abs(d2)))
+        return richardson(3);
       e.error  = std::max(std::abs(q.back() - e.limit), best);
       e.meshes = 4;
       return e;
