@@ -368,6 +368,12 @@ main()
                               "    set Direct solver = PETSc_Cholmod\n"
                               "  end\nend"}}),
            out, true, "mpirun --allow-run-as-root --oversubscribe -np 2 ");
+  // A PETSc or hypre AMG preconditions CG only.
+  run_case("amg_package_with_direct_solver",
+           scene({{"@EXTRA@", "subsection Solver\n  subsection Linear solver\n"
+                              "    set Type = direct\n    set AMG package = GAMG\n"
+                              "  end\nend"}}),
+           out);
   // The interior point method handles the rigid foundation only.
   run_case("interior_point_without_contact",
            scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\nend"}}),

@@ -6,10 +6,11 @@
 //   the reference; amd, amf, qamd), with Amesos_Klu, PETSc_Mumps (LDL^T),
 //   PETSc_Cholmod, and with CG + AMG (rigid motions as near null space,
 //   Chebyshev and block Gauss-Seidel smoothers, CG to 1e-12, no fallback
-//   to the direct solver);
+//   to the direct solver), and with CG preconditioned by hypre's
+//   BoomerAMG;
 // - on two ranks with the direct solver (auto: PETSc_Mumps, distributed),
-//   Amesos_Mumps (distributed), Amesos_Klu (gathered to one rank) and
-//   CG + AMG.
+//   Amesos_Mumps (distributed), Amesos_Klu (gathered to one rank),
+//   CG + AMG (ML) and CG preconditioned by PETSc's GAMG.
 // Each run converges, takes as many load steps as the reference, and its
 // quantities (contact force, Hertz a and p0, the largest penetration; the
 // top displacement and the reaction) agree with the reference's to 1e-8
@@ -67,7 +68,9 @@ main()
     {"direct_2_ranks", "    set Direct solver = auto\n", true},
     {"amesos_mumps_2_ranks", "    set Direct solver = Amesos_Mumps\n", true},
     {"klu_2_ranks", "    set Direct solver = Amesos_Klu\n", true},
-    {"cg_amg_2_ranks", cg, true}};
+    {"cg_amg_2_ranks", cg, true},
+    {"cg_gamg_2_ranks", cg + "    set AMG package = GAMG\n", true},
+    {"cg_boomeramg", cg + "    set AMG package = BoomerAMG\n", false}};
 
   struct Scene
   {

@@ -1,6 +1,7 @@
 #include <signorini/input_error.h>
 #include <signorini/pattern_hash.h>
 #include <signorini/solvers/linear_solver.h>
+#include <signorini/solvers/petsc_amg.h>
 #include <signorini/solvers/petsc_direct_solver.h>
 
 #include <deal.II/lac/solver_cg.h>
@@ -157,6 +158,19 @@ namespace Signorini
                       "(2), symmetric block Gauss-Seidel 77 (4). A "
                       "Gauss-Seidel sweep costs more than a Chebyshev "
                       "one.");
+    prm.declare_entry("AMG package",
+                      "ML",
+                      Patterns::Selection("ML|GAMG|BoomerAMG"),
+                      "Whose algebraic multigrid preconditions CG (Type = "
+                      "cg-amg). ML: Trilinos ML's smoothed aggregation with "
+                      "the entries above and the kept hierarchy. GAMG: "
+                      "PETSc's smoothed aggregation with the same near null "
+                      "space and the DoFs per node as block size. "
+                      "BoomerAMG: hypre's classical AMG with that block "
+                      "size. GAMG and BoomerAMG copy the matrix into PETSc "
+                      "and build a new hierarchy for every solve; PETSc's "
+                      "options (PETSC_OPTIONS: -pc_gamg_..., "
+                      "-pc_hypre_boomeramg_...) adjust them.");
     prm.declare_entry("AMG near null space",
                       "rigid motions",
                       Patterns::Selection("rigid motions|translations"),
@@ -229,6 +243,15 @@ namespace Signorini
     smoother              = prm.get("AMG smoother");
     fallback_to_direct    = prm.get_bool("Fall back to direct");
     keep_preconditioner   = prm.get_bool("Keep preconditioner");
+    {
+      const std::string package = prm.get("AMG package");
+      amg_package = package == "GAMG"      ? AmgPackage::gamg :
+                    package == "BoomerAMG" ? AmgPackage::boomeramg :
+                                             AmgPackage::ml;
+      if (amg_package != AmgPackage::ml && type != Type::cg_amg)
+        throw InputError("Solver > Linear solver > AMG package",
+                         package + " preconditions CG only: set Type = cg-amg");
+    }
     null_space = (prm.get("AMG near null space") == "translations" ?
                     NullSpace::translations :
                     NullSpace::rigid_motions);
@@ -239,8 +262,11 @@ namespace Signorini
   {
     if (type == Type::direct)
       return "direct (" + direct_solver + ")";
-    return std::string(type == Type::cg_amg ? "CG" : "MINRES") +
-           " + AMG (Trilinos ML)" +
+    return std::string(type == Type::cg_amg ? "CG" : "MINRES") + " + AMG (" +
+           (amg_package == AmgPackage::gamg      ? "PETSc GAMG" :
+            amg_package == AmgPackage::boomeramg ? "hypre BoomerAMG" :
+                                                   "Trilinos ML") +
+           ")" +
            (forcing == Forcing::eisenstat_walker ? ", Eisenstat-Walker forcing" : "");
   }
 
@@ -786,7 +812,36 @@ namespace Signorini
           return SolverControl::success;
         };
         if (parameters.type == Parameters::Type::cg_amg &&
-            parameters.keep_preconditioner)
+            parameters.amg_package != Parameters::AmgPackage::ml)
+          {
+            // A new PETSc hierarchy for this matrix, one V-cycle per CG
+            // iteration on the Trilinos vectors.
+            PETScAMG amg_petsc(parameters.amg_package == Parameters::AmgPackage::gamg ?
+                                 PETScAMG::Package::gamg :
+                                 PETScAMG::Package::boomeramg);
+            const unsigned int n_modes =
+              parameters.null_space == Parameters::NullSpace::rigid_motions ?
+                null_space.modes.size() :
+                std::min<std::size_t>(null_space.n_translations, null_space.modes.size());
+            const std::vector<std::vector<double>> modes(null_space.modes.begin(),
+                                                         null_space.modes.begin() + n_modes);
+            amg_petsc.initialize(H.trilinos_matrix(), modes, null_space.dofs_per_node);
+            ++amg.n_builds;
+            struct Preconditioner
+            {
+              const PETScAMG &amg;
+              void
+              vmult(VectorType &dst, const VectorType &src) const
+              {
+                amg.vmult(*dst.trilinos_vector()(0), *src.trilinos_vector()(0));
+              }
+            } preconditioner{amg_petsc};
+            SolverCG<VectorType> cg(control);
+            cg.connect(bounded);
+            cg.solve(H, x, b, preconditioner);
+          }
+        else if (parameters.type == Parameters::Type::cg_amg &&
+                 parameters.keep_preconditioner)
           solve_kept_amg(H, x, b, control, bounded, wasted);
         else if (parameters.type == Parameters::Type::cg_amg)
           {

@@ -33,6 +33,7 @@ namespace Signorini
   using namespace dealii;
 
   class PETScDirectSolver;
+  class PETScAMG;
 
   /**
    * The near null space of an elasticity operator for algebraic multigrid:
@@ -98,6 +99,16 @@ namespace Signorini
       /// across solves (solve_kept_amg()).
       bool         keep_preconditioner   = true;
       NullSpace    null_space            = NullSpace::rigid_motions;
+      /// Whose algebraic multigrid preconditions CG: Trilinos ML (with
+      /// the kept hierarchy), or PETSc's GAMG or hypre's BoomerAMG (a new
+      /// hierarchy every solve; PETScAMG).
+      enum class AmgPackage
+      {
+        ml,
+        gamg,
+        boomeramg
+      };
+      AmgPackage   amg_package           = AmgPackage::ml;
       /// How Newton sets an iterative solve's tolerance: the fixed
       /// 'Relative tolerance', or the Eisenstat-Walker forcing term
       /// (forcing_term()).
