@@ -1,4 +1,5 @@
 #include <signorini/solvers/petsc_amg.h>
+#include <signorini/solvers/petsc_interop.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MpiComm.h>
@@ -10,19 +11,6 @@
 
 namespace Signorini
 {
-  namespace
-  {
-    void
-    check_petsc(const PetscErrorCode code, const char *what)
-    {
-      if (code == 0)
-        return;
-      const char *text = nullptr;
-      PetscErrorMessage(code, &text, nullptr);
-      throw std::runtime_error(std::string("PETSc ") + what + " failed: " +
-                               (text ? text : "error " + std::to_string(code)));
-    }
-  } // namespace
 
   struct PETScAMG::State
   {
@@ -62,17 +50,7 @@ namespace Signorini
     const MPI_Comm  comm = mpi->Comm();
     const int       n    = A.NumMyRows();
     const PetscInt  N    = static_cast<PetscInt>(A.NumGlobalRows64());
-    long long       first = 0, mine = n;
-    MPI_Exscan(&mine, &first, 1, MPI_LONG_LONG, MPI_SUM, comm);
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    if (rank == 0)
-      first = 0;
-    int contiguous = 1;
-    for (int r = 0; r < n && contiguous; ++r)
-      contiguous = A.RowMap().GID64(r) == first + r;
-    MPI_Allreduce(MPI_IN_PLACE, &contiguous, 1, MPI_INT, MPI_MIN, comm);
-    if (!contiguous)
+    if (first_owned_row(A, comm) < 0)
       throw std::runtime_error(name(package) + ": the rows a rank owns are not "
                                                "one contiguous range in rank order");
 

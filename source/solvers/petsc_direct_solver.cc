@@ -1,5 +1,6 @@
 #include <signorini/input_error.h>
 #include <signorini/pattern_hash.h>
+#include <signorini/solvers/petsc_interop.h>
 #include <signorini/solvers/petsc_direct_solver.h>
 
 #include <deal.II/base/exceptions.h>
@@ -19,19 +20,6 @@ namespace Signorini
 {
   namespace
   {
-    /// A PETSc call that failed (not a failed factorisation, which PETSc
-    /// reports as the factor's error type): throw with its message.
-    void
-    check(const PetscErrorCode code, const char *what)
-    {
-      if (code == 0)
-        return;
-      const char *text = nullptr;
-      PetscErrorMessage(code, &text, nullptr);
-      throw std::runtime_error(std::string("PETSc ") + what + " failed: " +
-                               (text ? text : "error " + std::to_string(code)));
-    }
-
     /// Whether PETSc's options (PETSC_OPTIONS, the command line) chose
     /// MUMPS' ordering before this program set it: asked once, before the
     /// first analysis.
@@ -142,19 +130,19 @@ namespace Signorini
                   const std::vector<PetscInt> &off_diagonal,
                   Mat                         &M)
     {
-      check(MatCreate(comm, &M), "MatCreate");
-      check(MatSetSizes(M, n, n, n_global, n_global), "MatSetSizes");
-      check(MatSetType(M, MATAIJ), "MatSetType");
-      check(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
+      check_petsc(MatCreate(comm, &M), "MatCreate");
+      check_petsc(MatSetSizes(M, n, n, n_global, n_global), "MatSetSizes");
+      check_petsc(MatSetType(M, MATAIJ), "MatSetType");
+      check_petsc(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
             "MatSeqAIJSetPreallocation");
-      check(MatMPIAIJSetPreallocation(
+      check_petsc(MatMPIAIJSetPreallocation(
               M, 0, diagonal.data(), 0, off_diagonal.data()),
             "MatMPIAIJSetPreallocation");
       // Only the upper triangle is factorised: the Hessians are
       // symmetric.
-      check(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-      check(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
-      check(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
+      check_petsc(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+      check_petsc(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
+      check_petsc(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
             "MatSetOption");
     }
 
@@ -163,18 +151,18 @@ namespace Signorini
     void
     create_direct_solver(const MPI_Comm comm, const MatSolverType solver_type, KSP &ksp)
     {
-      check(KSPCreate(comm, &ksp), "KSPCreate");
-      check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+      check_petsc(KSPCreate(comm, &ksp), "KSPCreate");
+      check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
       PC pc = nullptr;
-      check(KSPGetPC(ksp, &pc), "KSPGetPC");
-      check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+      check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+      check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
       // The package's own fill-reducing ordering: PETSc's default for
       // a factorisation is the natural one, which CHOLMOD would take
       // as given (and fill the factor of a 34k-DoF 2D Hessian with
       // gigabytes).
-      check(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
+      check_petsc(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
             "PCFactorSetMatOrderingType");
-      check(PCFactorSetMatSolverType(pc, solver_type), "PCFactorSetMatSolverType");
+      check_petsc(PCFactorSetMatSolverType(pc, solver_type), "PCFactorSetMatSolverType");
     }
 
     /// Create the MUMPS factor of @p pc and set its controls, which must
@@ -190,9 +178,9 @@ namespace Signorini
       // ScaLAPACK on the root front, so that INFOG(12) counts
       // every negative pivot; ICNTL(14): 50% more workspace than
       // the analysis estimates.
-      check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+      check_petsc(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
       Mat F = nullptr;
-      check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+      check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
       // The ordering goes through PETSc's options: on one rank
       // PETSc 3.18 sets ICNTL(7) = 7 (MUMPS' own choice) when it
       // initialises MUMPS at the analysis, after this call, so
@@ -201,25 +189,25 @@ namespace Signorini
       // for large ones); the options are read after that. One set
       // in PETSC_OPTIONS wins.
       if (!ordering_from_command_line())
-        check(PetscOptionsSetValue(nullptr,
+        check_petsc(PetscOptionsSetValue(nullptr,
                                    "-mat_mumps_icntl_7",
                                    std::to_string(mumps_ordering).c_str()),
               "PetscOptionsSetValue");
-      check(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
-      check(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
-      check(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
+      check_petsc(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
+      check_petsc(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
+      check_petsc(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
       // ICNTL(15) = -k: the analysis orders the graph of the node
       // blocks (half or a third of the unknowns, a quarter or a
       // ninth of the edges): on the 2D 2e5-DoF rigid Hertz Hessian
       // 10% fewer flops per factorisation and a shorter analysis
       // (doc/performance.md).
       if (block > 1)
-        check(MatMumpsSetIcntl(F, 15, -block), "MUMPS ICNTL(15)");
+        check_petsc(MatMumpsSetIcntl(F, 15, -block), "MUMPS ICNTL(15)");
       // ICNTL(23): the most working memory per rank, so that a matrix too
       // large for the machine ends in MUMPS' own error (INFOG(1) = -19)
       // instead of the kernel killing the process.
       if (memory_mb > 0)
-        check(MatMumpsSetIcntl(F, 23, memory_mb), "MUMPS ICNTL(23)");
+        check_petsc(MatMumpsSetIcntl(F, 23, memory_mb), "MUMPS ICNTL(23)");
     }
 
     /// Why a factorisation failed, to follow the package's name.
@@ -361,22 +349,10 @@ namespace Signorini
                              const MPI_Comm          comm,
                              std::string            &message)
   {
-    const Epetra_BlockMap &rows = A.RowMap();
     const Epetra_BlockMap &cols = A.ColMap();
     const int              n    = A.NumMyRows();
-    // PETSc's parallel matrices own contiguous row ranges in rank
-    // order; deal.II's DoF numbering on a distributed mesh gives
-    // exactly that, which is checked rather than assumed.
-    long long n_before = 0, n_mine = n;
-    MPI_Exscan(&n_mine, &n_before, 1, MPI_LONG_LONG, MPI_SUM, comm);
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    if (rank == 0)
-      n_before = 0;
-    bool contiguous = true;
-    for (int r = 0; r < n && contiguous; ++r)
-      contiguous = rows.GID64(r) == n_before + r;
-    if (!on_all_ranks(comm, contiguous))
+    const long long n_before = first_owned_row(A, comm);
+    if (n_before < 0)
       {
         message = name(package) +
                   ": the rows a rank owns are not one contiguous range "
@@ -457,17 +433,17 @@ namespace Signorini
         AssertThrow(m == s.row_start[r + 1] - s.row_start[r],
                     dealii::ExcInternalError());
         const PetscInt row = s.first + r;
-        check(MatSetValues(s.matrix, 1, &row, m,
+        check_petsc(MatSetValues(s.matrix, 1, &row, m,
                            s.columns.data() + s.row_start[r], v,
                            INSERT_VALUES),
               "MatSetValues");
         s.values.insert(s.values.end(), v, v + m);
       }
-    check(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-    check(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-    check(KSPSetOperators(s.ksp, s.matrix, s.matrix), "KSPSetOperators");
+    check_petsc(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check_petsc(MatAssemblyEnd(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    check_petsc(KSPSetOperators(s.ksp, s.matrix, s.matrix), "KSPSetOperators");
     PC pc = nullptr;
-    check(KSPGetPC(s.ksp, &pc), "KSPGetPC");
+    check_petsc(KSPGetPC(s.ksp, &pc), "KSPGetPC");
     if (package == Package::mumps)
       set_mumps_controls(pc, mumps_ordering, s.block, memory_limit);
     // CHOLMOD's supernodal Cholesky stops at the first pivot that
@@ -479,13 +455,13 @@ namespace Signorini
     ++n_numeric;
     const bool not_definite = setup == PETSC_ERR_MAT_CH_ZRPVT;
     if (!not_definite)
-      check(setup, "KSPSetUp");
+      check_petsc(setup, "KSPSetUp");
 
     Mat F = nullptr;
-    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
     MatFactorError error = MAT_FACTOR_NOERROR;
     if (!not_definite)
-      check(MatFactorGetError(F, &error), "MatFactorGetError");
+      check_petsc(MatFactorGetError(F, &error), "MatFactorGetError");
     // MUMPS' status INFOG(1): its memory errors are -13 (an allocation
     // failed) and -19 (more than ICNTL(23) needed). (-8 and -9, a
     // workspace too small for the pivots of this matrix, stay ordinary
@@ -494,10 +470,10 @@ namespace Signorini
     if (package == Package::mumps && !not_definite)
       {
         PetscInt value = 0;
-        check(MatMumpsGetInfog(F, 1, &status), "MUMPS INFOG(1)");
-        check(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
+        check_petsc(MatMumpsGetInfog(F, 1, &status), "MUMPS INFOG(1)");
+        check_petsc(MatMumpsGetInfog(F, 12, &value), "MUMPS INFOG(12)");
         negative = static_cast<int>(value);
-        check(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
+        check_petsc(MatMumpsGetInfog(F, 7, &value), "MUMPS INFOG(7)");
         ordering = static_cast<int>(value);
         block    = s.block;
       }
@@ -534,17 +510,17 @@ namespace Signorini
     const State &s = *state;
     const int    n = x.MyLength();
     Vec          pb = nullptr, px = nullptr;
-    check(VecCreateMPIWithArray(
+    check_petsc(VecCreateMPIWithArray(
             comm, 1, n, s.n_global, const_cast<double *>(b[0]), &pb),
           "VecCreateMPIWithArray");
-    check(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
+    check_petsc(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
           "VecCreateMPIWithArray");
     const PetscErrorCode code = KSPSolve(s.ksp, pb, px);
     VecDestroy(&pb);
     VecDestroy(&px);
-    check(code, "KSPSolve");
+    check_petsc(code, "KSPSolve");
     KSPConvergedReason reason;
-    check(KSPGetConvergedReason(s.ksp, &reason), "KSPGetConvergedReason");
+    check_petsc(KSPGetConvergedReason(s.ksp, &reason), "KSPGetConvergedReason");
     if (!on_all_ranks(comm, reason >= 0))
       {
         state.reset();
