@@ -522,6 +522,14 @@ namespace Signorini
     return true;
   }
 
+  unsigned int
+  LinearSolver::n_amg_modes() const
+  {
+    return parameters.null_space == Parameters::NullSpace::rigid_motions ?
+             null_space.modes.size() :
+             std::min<std::size_t>(null_space.n_translations, null_space.modes.size());
+  }
+
   void
   LinearSolver::amg_parameters(const MatrixType                    &H,
                                Teuchos::ParameterList              &list,
@@ -538,10 +546,7 @@ namespace Signorini
     data.set_parameters(list, modes, H);
 
     const Epetra_Map  &map = H.trilinos_matrix().OperatorDomainMap();
-    const unsigned int n_modes =
-      parameters.null_space == Parameters::NullSpace::rigid_motions ?
-        null_space.modes.size() :
-        std::min<std::size_t>(null_space.n_translations, null_space.modes.size());
+    const unsigned int n_modes = n_amg_modes();
     if (n_modes == 0)
       return;
     AssertThrow(null_space.owned.n_elements() ==
@@ -819,13 +824,8 @@ namespace Signorini
             PETScAMG amg_petsc(parameters.amg_package == Parameters::AmgPackage::gamg ?
                                  PETScAMG::Package::gamg :
                                  PETScAMG::Package::boomeramg);
-            const unsigned int n_modes =
-              parameters.null_space == Parameters::NullSpace::rigid_motions ?
-                null_space.modes.size() :
-                std::min<std::size_t>(null_space.n_translations, null_space.modes.size());
-            const std::vector<std::vector<double>> modes(null_space.modes.begin(),
-                                                         null_space.modes.begin() + n_modes);
-            amg_petsc.initialize(H.trilinos_matrix(), modes, null_space.dofs_per_node);
+            amg_petsc.initialize(H.trilinos_matrix(), null_space.modes, n_amg_modes(),
+                                 null_space.dofs_per_node);
             ++amg.n_builds;
             struct Preconditioner
             {

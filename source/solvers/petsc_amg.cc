@@ -41,6 +41,7 @@ namespace Signorini
   void
   PETScAMG::initialize(const Epetra_CrsMatrix                 &A,
                        const std::vector<std::vector<double>> &modes,
+                       const unsigned int                      n_modes,
                        const unsigned int                      dofs_per_node)
   {
     state.reset();
@@ -103,11 +104,11 @@ namespace Signorini
                 "MatMPIAIJSetPreallocationCSR");
     check_petsc(MatSetOption(s->matrix, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
 
-    if (package == Package::gamg && !modes.empty())
+    if (package == Package::gamg && n_modes > 0)
       {
         // GAMG asks for orthonormal vectors: modified Gram-Schmidt.
-        std::vector<Vec> vectors(modes.size(), nullptr);
-        for (std::size_t m = 0; m < modes.size(); ++m)
+        std::vector<Vec> vectors(n_modes, nullptr);
+        for (std::size_t m = 0; m < n_modes; ++m)
           {
             check_petsc(VecCreateMPI(comm, n, N, &vectors[m]), "VecCreateMPI");
             PetscScalar *a = nullptr;

@@ -272,6 +272,11 @@ namespace Signorini
     void
     forget_analysis() const;
 
+    /// How many near null space vectors AMG gets: all the rigid motions,
+    /// or the translations alone ('AMG near null space').
+    unsigned int
+    n_amg_modes() const;
+
     /// ML's parameters for @p H, with the near null space in @p modes
     /// (which must live until the preconditioner is built).
     void

@@ -36,13 +36,15 @@ namespace Signorini
 
     /**
      * Build the hierarchy for @p A, whose locally owned rows must be one
-     * contiguous range in rank order (deal.II's numbering). @p modes: the
-     * near null space on the owned rows, in their order (GAMG; empty:
-     * GAMG's default); @p dofs_per_node: the block size (1: none).
+     * contiguous range in rank order (deal.II's numbering). The first
+     * @p n_modes of @p modes: the near null space on the owned rows, in
+     * their order (GAMG; none: GAMG's default); @p dofs_per_node: the
+     * block size (1: none).
      */
     void
     initialize(const Epetra_CrsMatrix                 &A,
                const std::vector<std::vector<double>> &modes,
+               unsigned int                            n_modes,
                unsigned int                            dofs_per_node);
 
     /// dst = M^-1 src, one V-cycle.
