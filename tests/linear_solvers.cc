@@ -7,10 +7,12 @@
 //   PETSc_Cholmod, and with CG + AMG (rigid motions as near null space,
 //   Chebyshev and block Gauss-Seidel smoothers, CG to 1e-12, no fallback
 //   to the direct solver), and with CG preconditioned by hypre's
-//   BoomerAMG;
+//   BoomerAMG (a new hierarchy for every matrix: the kept one is in
+//   tests/kept_amg.cc);
 // - on two ranks with the direct solver (auto: PETSc_Mumps, distributed),
 //   Amesos_Mumps (distributed), Amesos_Klu (gathered to one rank),
-//   CG + AMG (ML) and CG preconditioned by PETSc's GAMG.
+//   CG + AMG (ML) and CG preconditioned by PETSc's GAMG (both with the
+//   kept hierarchy).
 // Each run converges, takes as many load steps as the reference, and its
 // quantities (contact force, Hertz a and p0, the largest penetration; the
 // top displacement and the reaction) agree with the reference's to 1e-8
@@ -70,7 +72,7 @@ main()
     {"klu_2_ranks", "    set Direct solver = Amesos_Klu\n", true},
     {"cg_amg_2_ranks", cg, true},
     {"cg_gamg_2_ranks", cg + "    set AMG package = GAMG\n", true},
-    {"cg_boomeramg", cg + "    set AMG package = BoomerAMG\n", false}};
+    {"cg_boomeramg", cg + "    set AMG package = BoomerAMG\n    set Keep preconditioner = false\n", false}};
 
   struct Scene
   {

@@ -167,10 +167,10 @@ namespace Signorini
                       "PETSc's smoothed aggregation with the same near null "
                       "space and the DoFs per node as block size. "
                       "BoomerAMG: hypre's classical AMG with that block "
-                      "size. GAMG and BoomerAMG copy the matrix into PETSc "
-                      "and build a new hierarchy for every solve; PETSc's "
+                      "size. GAMG and BoomerAMG copy the matrix into PETSc; "
+                      "'Keep preconditioner' applies to all three. PETSc's "
                       "options (PETSC_OPTIONS: -pc_gamg_..., "
-                      "-pc_hypre_boomeramg_...) adjust them.");
+                      "-pc_hypre_boomeramg_...) adjust GAMG and BoomerAMG.");
     prm.declare_entry("AMG near null space",
                       "rigid motions",
                       Patterns::Selection("rigid motions|translations"),
@@ -316,6 +316,7 @@ namespace Signorini
   {
     forget_analysis();
     amg.preconditioner.reset();
+    amg.petsc.reset();
     amg.matrix = nullptr;
   }
 
@@ -628,6 +629,25 @@ namespace Signorini
 
   namespace
   {
+    /// One V-cycle of a PETScAMG on deal.II's Trilinos vectors.
+    struct PETScVCycle
+    {
+      const PETScAMG &amg;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        amg.vmult(*dst.trilinos_vector()(0), *src.trilinos_vector()(0));
+      }
+    };
+
+    PETScAMG::Package
+    petsc_package(const LinearSolver::Parameters::AmgPackage package)
+    {
+      return package == LinearSolver::Parameters::AmgPackage::gamg ?
+               PETScAMG::Package::gamg :
+               PETScAMG::Package::boomeramg;
+    }
+
     /// The operator w o A o w (w a diagonal, as a vector): vmult(dst, src)
     /// is w .* (A (w .* src)).
     template <class Operator>
@@ -693,21 +713,42 @@ namespace Signorini
     } scaled(A, s, s_inv);
 
     const std::size_t pattern = sparsity_pattern_hash(A);
-    const bool same_here = amg.preconditioner && amg.scaled && amg.matrix == &A &&
-                           amg.pattern_hash == pattern && !amg.rebuild;
+    const bool        ml      = parameters.amg_package == Parameters::AmgPackage::ml;
+    const bool same_here = (ml ? !!amg.preconditioner : !!amg.petsc) && amg.scaled &&
+                           amg.matrix == &A && amg.pattern_hash == pattern && !amg.rebuild;
     bool keep = Utilities::MPI::min(same_here ? 1 : 0, H.get_mpi_communicator()) == 1;
     const auto build = [&]() {
       amg.preconditioner.reset();
-      Teuchos::ParameterList              list;
-      std::unique_ptr<Epetra_MultiVector> modes;
-      amg_parameters(H, list, modes);
-      // The near null space of H_s is S^-1 times that of H.
-      if (modes)
-        for (int m = 0; m < modes->NumVectors(); ++m)
-          for (int i = 0; i < s.MyLength(); ++i)
-            (*modes)[m][i] *= s_inv[i];
-      amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      amg.preconditioner->initialize(H, list);
+      amg.petsc.reset();
+      if (ml)
+        {
+          Teuchos::ParameterList              list;
+          std::unique_ptr<Epetra_MultiVector> modes;
+          amg_parameters(H, list, modes);
+          // The near null space of H_s is S^-1 times that of H.
+          if (modes)
+            for (int m = 0; m < modes->NumVectors(); ++m)
+              for (int i = 0; i < s.MyLength(); ++i)
+                (*modes)[m][i] *= s_inv[i];
+          amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+          amg.preconditioner->initialize(H, list);
+        }
+      else
+        {
+          // The same for PETSc's copy of H_s (GAMG reads the modes).
+          const unsigned int               n_modes = n_amg_modes();
+          std::vector<std::vector<double>> modes(n_modes);
+          for (unsigned int m = 0; m < n_modes; ++m)
+            {
+              modes[m].resize(s.MyLength());
+              for (int i = 0; i < s.MyLength(); ++i)
+                modes[m][i] =
+                  null_space.modes[m][null_space.owned.index_within_set(s.Map().GID64(i))] *
+                  s_inv[i];
+            }
+          amg.petsc = std::make_unique<PETScAMG>(petsc_package(parameters.amg_package));
+          amg.petsc->initialize(A, modes, n_modes, null_space.dofs_per_node);
+        }
       amg.matrix       = &A;
       amg.pattern_hash = pattern;
       amg.values_hash  = 0;
@@ -729,11 +770,20 @@ namespace Signorini
       return state;
     };
     const auto run_cg = [&]() {
-      const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
-        *amg.preconditioner, w, VectorType(b)};
       SolverCG<VectorType> cg(control);
       cg.connect(checked);
-      cg.solve(op, x, b, preconditioner);
+      if (ml)
+        {
+          const Sandwiched<TrilinosWrappers::PreconditionAMG> preconditioner{
+            *amg.preconditioner, w, VectorType(b)};
+          cg.solve(op, x, b, preconditioner);
+        }
+      else
+        {
+          const Sandwiched<PETScVCycle> preconditioner{PETScVCycle{*amg.petsc}, w,
+                                                       VectorType(b)};
+          cg.solve(op, x, b, preconditioner);
+        }
     };
     wasted = 0;
     if (keep)
@@ -817,32 +867,19 @@ namespace Signorini
           return SolverControl::success;
         };
         if (parameters.type == Parameters::Type::cg_amg &&
-            parameters.amg_package != Parameters::AmgPackage::ml)
+            parameters.keep_preconditioner)
+          solve_kept_amg(H, x, b, control, bounded, wasted);
+        else if (parameters.type == Parameters::Type::cg_amg &&
+                 parameters.amg_package != Parameters::AmgPackage::ml)
           {
-            // A new PETSc hierarchy for this matrix, one V-cycle per CG
-            // iteration on the Trilinos vectors.
-            PETScAMG amg_petsc(parameters.amg_package == Parameters::AmgPackage::gamg ?
-                                 PETScAMG::Package::gamg :
-                                 PETScAMG::Package::boomeramg);
+            // A new PETSc hierarchy for this matrix.
+            PETScAMG amg_petsc(petsc_package(parameters.amg_package));
             amg_petsc.initialize(H.trilinos_matrix(), null_space.modes, n_amg_modes(),
                                  null_space.dofs_per_node);
-            ++amg.n_builds;
-            struct Preconditioner
-            {
-              const PETScAMG &amg;
-              void
-              vmult(VectorType &dst, const VectorType &src) const
-              {
-                amg.vmult(*dst.trilinos_vector()(0), *src.trilinos_vector()(0));
-              }
-            } preconditioner{amg_petsc};
             SolverCG<VectorType> cg(control);
             cg.connect(bounded);
-            cg.solve(H, x, b, preconditioner);
+            cg.solve(H, x, b, PETScVCycle{amg_petsc});
           }
-        else if (parameters.type == Parameters::Type::cg_amg &&
-                 parameters.keep_preconditioner)
-          solve_kept_amg(H, x, b, control, bounded, wasted);
         else if (parameters.type == Parameters::Type::cg_amg)
           {
             prepare_amg(H);

@@ -99,9 +99,10 @@ namespace Signorini
       /// across solves (solve_kept_amg()).
       bool         keep_preconditioner   = true;
       NullSpace    null_space            = NullSpace::rigid_motions;
-      /// Whose algebraic multigrid preconditions CG: Trilinos ML (with
-      /// the kept hierarchy), or PETSc's GAMG or hypre's BoomerAMG (a new
-      /// hierarchy every solve; PETScAMG).
+      /// Whose algebraic multigrid preconditions CG: Trilinos ML, or
+      /// PETSc's GAMG or hypre's BoomerAMG (PETScAMG); each with the kept
+      /// hierarchy of the scaled matrix unless keep_preconditioner is
+      /// false.
       enum class AmgPackage
       {
         ml,
@@ -343,6 +344,8 @@ namespace Signorini
     struct AmgState
     {
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
+      /// Or the PETSc package's hierarchy (solve_kept_amg() only).
+      std::unique_ptr<PETScAMG> petsc;
       const void  *matrix        = nullptr;
       std::size_t  pattern_hash  = 0;
       std::size_t  values_hash   = 0;
