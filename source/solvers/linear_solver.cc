@@ -196,8 +196,10 @@ namespace Signorini
                       "the others. Measured on prm/hertz_sphere.prm "
                       "(interior point method): one build for the whole "
                       "run at 28 071 DoFs, two per rank at 169 773; "
-                      "doc/performance.md has the times. false: a new "
-                      "hierarchy for every new matrix.");
+                      "doc/performance.md has the times. Applies to every "
+                      "'AMG package'; hypre's BoomerAMG does worse on the "
+                      "scaled matrix (false was faster at 1.7e5 DoFs). "
+                      "false: a new hierarchy for every new matrix.");
     prm.declare_entry("Fall back to direct",
                       "true",
                       Patterns::Bool(),
