@@ -19,7 +19,13 @@
 // - with 'Acceptable tolerance = 0' (at most 20 iterations, no load step
 //   cut below 0.4 of the path) the same solve fails with "no convergence
 //   in 20 interior point iterations": the exit is what saves it;
-// - p0, a and the contact force equal those of a 2-rank run to 1e-7.
+// - p0, a and the contact force equal those of a 2-rank run to 1e-6: each
+//   run keeps the best iterate of a stalled step, which the acceptable
+//   tolerance (1e-6) vouches for, and where each stalls depends on
+//   round-off (measured: 1.8e-7 in p0, one rank accepting a residual of
+//   5e-10 after 12 iterations of the second step, two ranks 3e-13 after
+//   14, since ML's coarse level was cut from 2000 to 250 unknowns; below
+//   1e-7 before).
 
 #include "run_output.h"
 
@@ -68,5 +74,5 @@ main()
       << verdict(one == 0 && steps == 2 && iterations <= 40 && noted) << "\n"
       << "without the acceptable exit the solve fails (no convergence in 20 iterations): "
       << verdict(failed_without) << "\n"
-      << "the 2-rank answers to 1e-7: " << verdict(two == 0 && worst < 1e-7) << "\n";
+      << "the 2-rank answers to 1e-6: " << verdict(two == 0 && worst < 1e-6) << "\n";
 }

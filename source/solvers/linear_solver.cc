@@ -145,6 +145,20 @@ namespace Signorini
                       Patterns::Integer(1, 20),
                       "Trilinos ML smoother sweeps (the degree of the "
                       "Chebyshev polynomial).");
+    prm.declare_entry("AMG coarse size",
+                      "250",
+                      Patterns::Integer(1),
+                      "Trilinos ML coarsens until a level has at most this "
+                      "many unknowns, and factorises that level with KLU "
+                      "(deal.II's default: 2000). A 3D elasticity coarse "
+                      "level with six rigid motions per aggregate has a "
+                      "nearly dense factor: at 2000 its two triangular "
+                      "solves per V-cycle took a quarter of the sphere's run "
+                      "at 27 882 DoFs. Measured on prm/hertz_sphere.prm, 2 "
+                      "ranks, whole process: 1.84 s with 2000, 1.42 s with "
+                      "250 (27 882 DoFs); 10.7 s and 9.2 s (168 597); 101.0 "
+                      "s and 99.0 s (1 179 831); the same CG iterations "
+                      "(doc/performance.md).");
     prm.declare_entry("AMG smoother",
                       "Chebyshev",
                       Patterns::Selection(
@@ -242,6 +256,7 @@ namespace Signorini
                          prm.get("Relative tolerance") + ")");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    amg_coarse_size       = prm.get_integer("AMG coarse size");
     smoother              = prm.get("AMG smoother");
     fallback_to_direct    = prm.get_bool("Fall back to direct");
     keep_preconditioner   = prm.get_bool("Keep preconditioner");
@@ -547,6 +562,7 @@ namespace Signorini
     // deal.II's defaults for smoothed aggregation, without a null space:
     // it takes boolean masks only, which cannot express rotations.
     data.set_parameters(list, modes, H);
+    list.set("coarse: max size", static_cast<int>(parameters.amg_coarse_size));
 
     const Epetra_Map  &map = H.trilinos_matrix().OperatorDomainMap();
     const unsigned int n_modes = n_amg_modes();
@@ -569,6 +585,17 @@ namespace Signorini
     // aggregate (ML needs at least as many DoFs per aggregate as modes).
     if (null_space.dofs_per_node > 1)
       list.set("PDE equations", static_cast<int>(null_space.dofs_per_node));
+    // ML's block Gauss-Seidel takes the finest level's block size (the
+    // DoFs per node) on every level, but a coarse level has one block of
+    // n_modes unknowns per aggregate: in 2D 3 modes against 2 DoFs per
+    // node, and a level with an odd number of aggregates stops ML ("BGS
+    // requires an integer no. of blocks"). The coarse levels then smooth
+    // point by point.
+    if (parameters.smoother == "symmetric block Gauss-Seidel" &&
+        null_space.dofs_per_node > 1 && n_modes % null_space.dofs_per_node != 0)
+      for (int level = 1; level < 10; ++level)
+        list.set("smoother: type (level " + std::to_string(level) + ")",
+                 std::string("symmetric Gauss-Seidel"));
   }
 
   namespace

@@ -92,6 +92,8 @@ namespace Signorini
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;
       unsigned int smoother_sweeps       = 2;
+      /// ML's "coarse: max size": the largest level factorised directly.
+      unsigned int amg_coarse_size       = 250;
       /// ML's "smoother: type".
       std::string  smoother              = "Chebyshev";
       bool         fallback_to_direct    = true;
