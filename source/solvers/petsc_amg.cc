@@ -90,9 +90,7 @@ namespace Signorini
     check_petsc(MatCreate(comm, &s->matrix), "MatCreate");
     check_petsc(MatSetSizes(s->matrix, n, n, N, N), "MatSetSizes");
     const unsigned int block_size = dofs_per_node;
-    int                blocked    = (block_size > 1 && n % block_size == 0) ? 1 : 0;
-    MPI_Allreduce(MPI_IN_PLACE, &blocked, 1, MPI_INT, MPI_MIN, comm);
-    if (blocked)
+    if (on_all_ranks(comm, block_size > 1 && n % block_size == 0))
       check_petsc(MatSetBlockSize(s->matrix, static_cast<PetscInt>(block_size)),
                   "MatSetBlockSize");
     check_petsc(MatSetType(s->matrix, MATAIJ), "MatSetType");
@@ -106,8 +104,18 @@ namespace Signorini
 
     if (package == Package::gamg && n_modes > 0)
       {
-        // GAMG asks for orthonormal vectors: modified Gram-Schmidt.
-        std::vector<Vec> vectors(n_modes, nullptr);
+        // GAMG asks for orthonormal vectors: modified Gram-Schmidt. The
+        // vectors are destroyed also when a PETSc call throws.
+        struct Vectors
+        {
+          std::vector<Vec> v;
+          ~Vectors()
+          {
+            for (auto &x : v)
+              VecDestroy(&x);
+          }
+        } owned{std::vector<Vec>(n_modes, nullptr)};
+        std::vector<Vec> &vectors = owned.v;
         for (std::size_t m = 0; m < n_modes; ++m)
           {
             check_petsc(VecCreateMPI(comm, n, N, &vectors[m]), "VecCreateMPI");
@@ -128,10 +136,9 @@ namespace Signorini
         check_petsc(MatNullSpaceCreate(comm, PETSC_FALSE, static_cast<PetscInt>(vectors.size()),
                                        vectors.data(), &space),
                     "MatNullSpaceCreate");
-        check_petsc(MatSetNearNullSpace(s->matrix, space), "MatSetNearNullSpace");
+        const PetscErrorCode code = MatSetNearNullSpace(s->matrix, space);
         MatNullSpaceDestroy(&space);
-        for (auto &v : vectors)
-          VecDestroy(&v);
+        check_petsc(code, "MatSetNearNullSpace");
       }
 
     check_petsc(PCCreate(comm, &s->pc), "PCCreate");

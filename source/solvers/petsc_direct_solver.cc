@@ -75,15 +75,6 @@ namespace Signorini
       return counts;
     }
 
-    /// Whether @p v holds on every rank of @p comm (collective).
-    bool
-    on_all_ranks(const MPI_Comm comm, const bool v)
-    {
-      int local = v ? 1 : 0, global = 0;
-      MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
-      return global == 1;
-    }
-
     /// The size of the node blocks whose graph MUMPS is to order: 3 or 2
     /// where every rank's rows split into such blocks and half of all of
     /// them have one pattern, else 1 (collective).
@@ -134,16 +125,16 @@ namespace Signorini
       check_petsc(MatSetSizes(M, n, n, n_global, n_global), "MatSetSizes");
       check_petsc(MatSetType(M, MATAIJ), "MatSetType");
       check_petsc(MatSeqAIJSetPreallocation(M, 0, diagonal.data()),
-            "MatSeqAIJSetPreallocation");
-      check_petsc(MatMPIAIJSetPreallocation(
-              M, 0, diagonal.data(), 0, off_diagonal.data()),
-            "MatMPIAIJSetPreallocation");
+                  "MatSeqAIJSetPreallocation");
+      check_petsc(MatMPIAIJSetPreallocation(M, 0, diagonal.data(), 0,
+                                            off_diagonal.data()),
+                  "MatMPIAIJSetPreallocation");
       // Only the upper triangle is factorised: the Hessians are
       // symmetric.
       check_petsc(MatSetOption(M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
       check_petsc(MatSetOption(M, MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption");
       check_petsc(MatSetOption(M, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
-            "MatSetOption");
+                  "MatSetOption");
     }
 
     /// Create @p ksp: no iteration, only the Cholesky factorisation of
@@ -161,7 +152,7 @@ namespace Signorini
       // as given (and fill the factor of a 34k-DoF 2D Hessian with
       // gigabytes).
       check_petsc(PCFactorSetMatOrderingType(pc, MATORDERINGEXTERNAL),
-            "PCFactorSetMatOrderingType");
+                  "PCFactorSetMatOrderingType");
       check_petsc(PCFactorSetMatSolverType(pc, solver_type), "PCFactorSetMatSolverType");
     }
 
@@ -190,9 +181,9 @@ namespace Signorini
       // in PETSC_OPTIONS wins.
       if (!ordering_from_command_line())
         check_petsc(PetscOptionsSetValue(nullptr,
-                                   "-mat_mumps_icntl_7",
-                                   std::to_string(mumps_ordering).c_str()),
-              "PetscOptionsSetValue");
+                                         "-mat_mumps_icntl_7",
+                                         std::to_string(mumps_ordering).c_str()),
+                    "PetscOptionsSetValue");
       check_petsc(MatMumpsSetIcntl(F, 28, 1), "MUMPS ICNTL(28)");
       check_petsc(MatMumpsSetIcntl(F, 13, 1), "MUMPS ICNTL(13)");
       check_petsc(MatMumpsSetIcntl(F, 14, 50), "MUMPS ICNTL(14)");
@@ -434,9 +425,9 @@ namespace Signorini
                     dealii::ExcInternalError());
         const PetscInt row = s.first + r;
         check_petsc(MatSetValues(s.matrix, 1, &row, m,
-                           s.columns.data() + s.row_start[r], v,
-                           INSERT_VALUES),
-              "MatSetValues");
+                                 s.columns.data() + s.row_start[r], v,
+                                 INSERT_VALUES),
+                    "MatSetValues");
         s.values.insert(s.values.end(), v, v + m);
       }
     check_petsc(MatAssemblyBegin(s.matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -510,11 +501,11 @@ namespace Signorini
     const State &s = *state;
     const int    n = x.MyLength();
     Vec          pb = nullptr, px = nullptr;
-    check_petsc(VecCreateMPIWithArray(
-            comm, 1, n, s.n_global, const_cast<double *>(b[0]), &pb),
-          "VecCreateMPIWithArray");
+    check_petsc(VecCreateMPIWithArray(comm, 1, n, s.n_global,
+                                      const_cast<double *>(b[0]), &pb),
+                "VecCreateMPIWithArray");
     check_petsc(VecCreateMPIWithArray(comm, 1, n, s.n_global, x[0], &px),
-          "VecCreateMPIWithArray");
+                "VecCreateMPIWithArray");
     const PetscErrorCode code = KSPSolve(s.ksp, pb, px);
     VecDestroy(&pb);
     VecDestroy(&px);

@@ -22,6 +22,15 @@ namespace Signorini
                              (text ? text : "error " + std::to_string(code)));
   }
 
+  /// Whether @p v holds on every rank of @p comm (collective).
+  inline bool
+  on_all_ranks(const MPI_Comm comm, const bool v)
+  {
+    int local = v ? 1 : 0, global = 0;
+    MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
+    return global == 1;
+  }
+
   /**
    * The global index of this rank's first row of @p A if the rows every
    * rank owns are one contiguous range in rank order, as PETSc's parallel
@@ -39,10 +48,9 @@ namespace Signorini
     MPI_Comm_rank(comm, &rank);
     if (rank == 0)
       first = 0;
-    int contiguous = 1;
+    bool contiguous = true;
     for (int r = 0; r < n && contiguous; ++r)
       contiguous = A.RowMap().GID64(r) == first + r;
-    MPI_Allreduce(MPI_IN_PLACE, &contiguous, 1, MPI_INT, MPI_MIN, comm);
-    return contiguous ? first : -1;
+    return on_all_ranks(comm, contiguous) ? first : -1;
   }
 } // namespace Signorini
