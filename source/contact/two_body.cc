@@ -695,9 +695,33 @@ namespace Signorini
       constexpr unsigned int n_variables = IndicatorFace<dim>::n_variables;
       Vector<double>         g(n_variables);
       FullMatrix<double>     H(n_variables, n_variables);
-      Vector<double>         local_rhs;
-      FullMatrix<double>     local_matrix;
-      std::vector<types::global_dof_index> dofs;
+      // The local matrices and vectors of the pairs of one evaluation
+      // point's group (the points of one face of body 1: they share its
+      // DoFs) with one target face are summed before they go into the
+      // matrix, one insertion per (face, target face) instead of one per
+      // point: in 3D each insertion writes 36 x 36 entries through
+      // Epetra's global-to-local lookups. A group of one pair (every pair
+      // of the nodal form) is inserted as it is.
+      struct Open
+      {
+        unsigned int                         face;
+        std::vector<types::global_dof_index> dofs;
+        Vector<double>                       rhs;
+        FullMatrix<double>                   matrix;
+        unsigned int                         n_pairs;
+      };
+      std::vector<Open>  open;   // the current group's, by first appearance
+      const Point1      *group = nullptr;
+      const auto         flush = [&]() {
+        for (auto &o : open)
+          if (rhs && hessian)
+            c.distribute_local_to_global(o.matrix, o.rhs, o.dofs, *hessian, *rhs);
+          else if (rhs)
+            c.distribute_local_to_global(o.rhs, o.dofs, *rhs);
+          else
+            c.distribute_local_to_global(o.matrix, o.dofs, *hessian);
+        open.clear();
+      };
       double value = 0.;
       for (const auto &pair : pairs)
         {
@@ -750,24 +774,41 @@ namespace Signorini
             }
           if (!rhs && !hessian)
             continue;
-          dofs.assign(p.dofs.begin(), p.dofs.end());
-          dofs.insert(dofs.end(), faces2[pair.second].dofs.begin(),
-                      faces2[pair.second].dofs.end());
-          local_rhs.reinit(n);
-          local_matrix.reinit(n, n);
+          if (group == nullptr || group->dofs != p.dofs)
+            {
+              flush();
+              group = &p;
+            }
+          auto o = std::find_if(open.begin(), open.end(), [&](const Open &x) {
+            return x.face == pair.second;
+          });
+          if (o == open.end())
+            {
+              Open fresh;
+              fresh.face = pair.second;
+              fresh.dofs.assign(p.dofs.begin(), p.dofs.end());
+              fresh.dofs.insert(fresh.dofs.end(), faces2[pair.second].dofs.begin(),
+                                faces2[pair.second].dofs.end());
+              fresh.rhs.reinit(n);
+              fresh.matrix.reinit(n, n);
+              fresh.n_pairs = 0;
+              open.push_back(std::move(fresh));
+              o = open.end() - 1;
+            }
+          // The first pair's values are copied, later ones added.
+          const bool first = o->n_pairs++ == 0;
           for (unsigned int i = 0; i < n; ++i)
             {
-              local_rhs(i) = -scale * fac[i] * g(var[i]);
+              const double r = -scale * fac[i] * g(var[i]);
+              o->rhs(i)      = first ? r : o->rhs(i) + r;
               for (unsigned int j = 0; j < n; ++j)
-                local_matrix(i, j) = scale * fac[i] * fac[j] * H(var[i], var[j]);
+                {
+                  const double m = scale * fac[i] * fac[j] * H(var[i], var[j]);
+                  o->matrix(i, j) = first ? m : o->matrix(i, j) + m;
+                }
             }
-          if (rhs && hessian)
-            c.distribute_local_to_global(local_matrix, local_rhs, dofs, *hessian, *rhs);
-          else if (rhs)
-            c.distribute_local_to_global(local_rhs, dofs, *rhs);
-          else
-            c.distribute_local_to_global(local_matrix, dofs, *hessian);
         }
+      flush();
       if (rhs)
         rhs->compress(VectorOperation::add);
       if (hessian)
