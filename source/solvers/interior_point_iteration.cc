@@ -313,14 +313,16 @@ namespace Signorini
   InteriorPointIteration<dim>::polish_if_settled(const Residuals   &r,
                                                  const unsigned int iteration)
   {
-    // Iterative solves need the kept hierarchy of the scaled matrix, which
-    // sees the pinned rows' stiff penalty as a unit diagonal (a hierarchy
-    // of the unscaled matrix made CG crawl).
+    // Iterative solves need ML's kept hierarchy of the scaled matrix, which
+    // sees the pinned rows' stiff penalty as a unit diagonal (ML's hierarchy
+    // of the unscaled matrix made CG crawl); a new PETSc hierarchy for
+    // every matrix (GAMG, BoomerAMG without 'Keep preconditioner') copes.
     const auto &linear = minimizer.linear_solver.get_parameters();
+    const bool  cg     = linear.type == LinearSolver::Parameters::Type::cg_amg;
     if (!parameters.active_set_polish || minimizer.n_constraints == 0 ||
         (linear.type != LinearSolver::Parameters::Type::direct &&
-         !(linear.type == LinearSolver::Parameters::Type::cg_amg &&
-           linear.keep_preconditioner)) ||
+         !(cg && (linear.keep_preconditioner ||
+                  linear.amg_package != LinearSolver::Parameters::AmgPackage::ml))) ||
         r.complementarity > 1e-4 * unit || r.primal > parameters.tolerance * h)
       return false;
     std::vector<char> pinned(n, 0);
