@@ -5,7 +5,8 @@
 // - on one rank with Amesos_Mumps and each deterministic ordering (pord,
 //   the reference; amd, amf, qamd), with Amesos_Klu, PETSc_Mumps (LDL^T),
 //   PETSc_Cholmod, and with CG + AMG (rigid motions as near null space,
-//   Chebyshev and block Gauss-Seidel smoothers, CG to 1e-12, no fallback
+//   Chebyshev and block Gauss-Seidel smoothers, the latter also with a
+//   coarse level of at most 250 unknowns, CG to 1e-12, no fallback
 //   to the direct solver), and with CG preconditioned by hypre's
 //   BoomerAMG (a new hierarchy for every matrix: the kept one is in
 //   tests/kept_amg.cc);
@@ -67,6 +68,12 @@ main()
     {"petsc_cholmod", "    set Direct solver = PETSc_Cholmod\n", false},
     {"cg_amg", cg, false},
     {"cg_amg_gauss_seidel", cg + "    set AMG smoother = symmetric block Gauss-Seidel\n", false},
+    // A small coarse level: ML's block Gauss-Seidel on a 2D coarse level
+    // with an odd number of aggregates (3 modes, 2 DoFs per node) ended the
+    // process before the coarse levels were smoothed point by point.
+    {"cg_amg_gauss_seidel_coarse_250",
+     cg + "    set AMG smoother = symmetric block Gauss-Seidel\n    set AMG coarse size = 250\n",
+     false},
     {"direct_2_ranks", "    set Direct solver = auto\n", true},
     {"amesos_mumps_2_ranks", "    set Direct solver = Amesos_Mumps\n", true},
     {"klu_2_ranks", "    set Direct solver = Amesos_Klu\n", true},

@@ -146,18 +146,21 @@ namespace Signorini
                       "Trilinos ML smoother sweeps (the degree of the "
                       "Chebyshev polynomial).");
     prm.declare_entry("AMG coarse size",
-                      "250",
-                      Patterns::Integer(1),
+                      "0",
+                      Patterns::Integer(0),
                       "Trilinos ML coarsens until a level has at most this "
-                      "many unknowns, and factorises that level with KLU "
-                      "(deal.II's default: 2000). A 3D elasticity coarse "
-                      "level with six rigid motions per aggregate has a "
-                      "nearly dense factor: at 2000 its two triangular "
-                      "solves per V-cycle took a quarter of the sphere's run "
-                      "at 27 882 DoFs. Measured on prm/hertz_sphere.prm, 2 "
-                      "ranks, whole process: 1.84 s with 2000, 1.42 s with "
-                      "250 (27 882 DoFs); 10.7 s and 9.2 s (168 597); 101.0 "
-                      "s and 99.0 s (1 179 831); the same CG iterations "
+                      "many unknowns, and factorises that level with KLU. 0: "
+                      "250 where the near null space has the six rigid "
+                      "motions of 3D, 2000 (deal.II's default) otherwise. A "
+                      "3D coarse level with "
+                      "six rigid motions per aggregate has a nearly dense "
+                      "factor: at 2000 its two triangular solves per V-cycle "
+                      "took a quarter of the sphere's run at 27 882 DoFs. "
+                      "Measured on prm/hertz_sphere.prm, 2 ranks, whole "
+                      "process: 1.84 s with 2000, 1.42 s with 250 (27 882 "
+                      "DoFs); 10.7 s and 9.2 s (168 597); the same CG "
+                      "iterations. In 2D 250 took 5% (2e5 DoFs) and 17% "
+                      "(8e5) more CG iterations for no gain in time "
                       "(doc/performance.md).");
     prm.declare_entry("AMG smoother",
                       "Chebyshev",
@@ -564,7 +567,12 @@ namespace Signorini
     // deal.II's defaults for smoothed aggregation, without a null space:
     // it takes boolean masks only, which cannot express rotations.
     data.set_parameters(list, modes, H);
-    list.set("coarse: max size", static_cast<int>(parameters.amg_coarse_size));
+    // 0: a small coarse level where each aggregate carries the six rigid
+    // motions of 3D (a nearly dense factor), deal.II's default otherwise.
+    const unsigned int coarse_size = parameters.amg_coarse_size > 0 ? parameters.amg_coarse_size :
+                                     n_amg_modes() >= 6             ? 250 :
+                                                                      2000;
+    list.set("coarse: max size", static_cast<int>(coarse_size));
     // ML's default, Uncoupled-MIS, aggregates across the ranks (MIS) once
     // a level has few rows per rank, and its check of the node blocks then
     // failed on the two-body couplings' ghost columns and ended the process

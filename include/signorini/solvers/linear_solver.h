@@ -92,8 +92,10 @@ namespace Signorini
       unsigned int max_iterations     = 1000;
       double       aggregation_threshold = 1e-4;
       unsigned int smoother_sweeps       = 2;
-      /// ML's "coarse: max size": the largest level factorised directly.
-      unsigned int amg_coarse_size       = 250;
+      /// ML's "coarse: max size": the largest level factorised directly;
+      /// 0: 250 with the six rigid motions of 3D as near null space, 2000
+      /// otherwise.
+      unsigned int amg_coarse_size       = 0;
       /// ML's "smoother: type".
       std::string  smoother              = "Chebyshev";
       bool         fallback_to_direct    = true;
