@@ -616,6 +616,25 @@ namespace Signorini
 
   namespace
   {
+    /// One V-cycle of a PETScAMG on deal.II's Trilinos vectors.
+    struct PETScVCycle
+    {
+      const PETScAMG &amg;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        amg.vmult(*dst.trilinos_vector()(0), *src.trilinos_vector()(0));
+      }
+    };
+
+    PETScAMG::Package
+    petsc_package(const LinearSolver::Parameters::AmgPackage package)
+    {
+      return package == LinearSolver::Parameters::AmgPackage::gamg ?
+               PETScAMG::Package::gamg :
+               PETScAMG::Package::boomeramg;
+    }
+
     /// A hash of the bits of the locally owned rows' values of @p A, the
     /// same on every rank.
     std::size_t
@@ -648,8 +667,12 @@ namespace Signorini
     const MPI_Comm          comm    = H.get_mpi_communicator();
     const std::size_t       pattern = sparsity_pattern_hash(A);
     const std::size_t       values  = values_hash(A, comm);
+    // PETSc's hierarchy for CG with another 'AMG package', ML's otherwise
+    // (MINRES too).
+    const bool ml = parameters.type != Parameters::Type::cg_amg ||
+                    parameters.amg_package == Parameters::AmgPackage::ml;
     // The hierarchy refers to the matrix object it was built from.
-    const bool same_here    = amg.preconditioner && !amg.scaled &&
+    const bool same_here = (ml ? !!amg.preconditioner : !!amg.petsc) && !amg.scaled &&
                            amg.matrix == &A && amg.pattern_hash == pattern;
     const bool same_pattern = Utilities::MPI::min(same_here ? 1 : 0, comm) == 1;
     // Only for the very matrix it was built from: a hierarchy kept for
@@ -657,15 +680,25 @@ namespace Signorini
     // the iterations on the interior point method's matrices, whose
     // contact rows change by orders of magnitude (ML's Chebyshev smoother
     // keeps the old largest eigenvalue).
+    // The interior point method's predictor and corrector share one.
     if (same_pattern && amg.values_hash == values)
       return;
 
     amg.preconditioner.reset();
-    Teuchos::ParameterList              list;
-    std::unique_ptr<Epetra_MultiVector> modes;
-    amg_parameters(H, list, modes);
-    amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg.preconditioner->initialize(H, list);
+    amg.petsc.reset();
+    if (ml)
+      {
+        Teuchos::ParameterList              list;
+        std::unique_ptr<Epetra_MultiVector> modes;
+        amg_parameters(H, list, modes);
+        amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg.preconditioner->initialize(H, list);
+      }
+    else
+      {
+        amg.petsc = std::make_unique<PETScAMG>(petsc_package(parameters.amg_package));
+        amg.petsc->initialize(A, null_space.modes, n_amg_modes(), null_space.dofs_per_node);
+      }
     amg.matrix       = &A;
     amg.pattern_hash = pattern;
     amg.values_hash  = values;
@@ -674,25 +707,6 @@ namespace Signorini
 
   namespace
   {
-    /// One V-cycle of a PETScAMG on deal.II's Trilinos vectors.
-    struct PETScVCycle
-    {
-      const PETScAMG &amg;
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        amg.vmult(*dst.trilinos_vector()(0), *src.trilinos_vector()(0));
-      }
-    };
-
-    PETScAMG::Package
-    petsc_package(const LinearSolver::Parameters::AmgPackage package)
-    {
-      return package == LinearSolver::Parameters::AmgPackage::gamg ?
-               PETScAMG::Package::gamg :
-               PETScAMG::Package::boomeramg;
-    }
-
     /// The operator w o A o w (w a diagonal, as a vector): vmult(dst, src)
     /// is w .* (A (w .* src)).
     template <class Operator>
@@ -917,13 +931,10 @@ namespace Signorini
         else if (parameters.type == Parameters::Type::cg_amg &&
                  parameters.amg_package != Parameters::AmgPackage::ml)
           {
-            // A new PETSc hierarchy for this matrix.
-            PETScAMG amg_petsc(petsc_package(parameters.amg_package));
-            amg_petsc.initialize(H.trilinos_matrix(), null_space.modes, n_amg_modes(),
-                                 null_space.dofs_per_node);
+            prepare_amg(H);
             SolverCG<VectorType> cg(control);
             cg.connect(bounded);
-            cg.solve(H, x, b, PETScVCycle{amg_petsc});
+            cg.solve(H, x, b, PETScVCycle{*amg.petsc});
           }
         else if (parameters.type == Parameters::Type::cg_amg)
           {

@@ -307,8 +307,9 @@ namespace Signorini
       std::unique_ptr<PETScDirectSolver>    petsc;
     };
 
-    /// Build the AMG hierarchy for @p H unless it is that of the last
-    /// solve (the same matrix object, pattern and values).
+    /// Build the AMG hierarchy for @p H (ML's, or PETSc's for CG with
+    /// another 'AMG package') unless it is that of the last solve (the
+    /// same matrix object, pattern and values).
     void
     prepare_amg(const MatrixType &H) const;
 
@@ -348,7 +349,7 @@ namespace Signorini
     struct AmgState
     {
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> preconditioner;
-      /// Or the PETSc package's hierarchy (solve_kept_amg() only).
+      /// Or the PETSc package's hierarchy.
       std::unique_ptr<PETScAMG> petsc;
       const void  *matrix        = nullptr;
       std::size_t  pattern_hash  = 0;
