@@ -134,6 +134,7 @@ namespace Signorini
       double                               strain_energy = 0.;
       double                               external_work = 0.;
       double                               force_sq      = 0.;
+      double                               modulus_volume = 0.;
       double                               min_J = std::numeric_limits<double>::max();
       bool                                 admissible = true;
       bool                                 active     = false;
@@ -141,7 +142,7 @@ namespace Signorini
       void
       reset()
       {
-        strain_energy = external_work = force_sq = 0.;
+        strain_energy = external_work = force_sq = modulus_volume = 0.;
         min_J      = std::numeric_limits<double>::max();
         admissible = true;
         active     = false;
@@ -393,6 +394,7 @@ namespace Signorini
         std::vector<double>    &f_ext = s.f_ext;
         f_int.assign(want_gradient ? dofs_per_cell : 0, 0.);
         f_ext.assign(want_gradient ? dofs_per_cell : 0, 0.);
+        const double shear_modulus = std::abs(material.small_strain_lame().first);
         for (unsigned int q = 0; q < n_q; ++q)
           {
             // The scalar gradients once per node (not per shape function).
@@ -411,6 +413,7 @@ namespace Signorini
               }
             const double JxW = s.fe_values.JxW(q);
             c.strain_energy += response.psi * JxW;
+            c.modulus_volume += shear_modulus * JxW;
 
             if (bc.has_body_force())
               for (unsigned int d = 0; d < dim; ++d)
@@ -512,6 +515,8 @@ namespace Signorini
       result.external_work = Utilities::MPI::sum(result.external_work, comm);
       result.min_J         = Utilities::MPI::min(result.min_J, comm);
       result.force_scale   = std::sqrt(Utilities::MPI::sum(force_sq, comm));
+      result.round_off     = std::numeric_limits<double>::epsilon() *
+                         Utilities::MPI::sum(result.round_off, comm);
       result.admissible =
         Utilities::MPI::min(result.admissible ? 1 : 0, comm) == 1;
       result.value = result.strain_energy - result.external_work;
@@ -594,6 +599,7 @@ namespace Signorini
       result.external_work += c.external_work;
       result.min_J = std::min(result.min_J, c.min_J);
       force_sq += c.force_sq;
+      result.round_off += c.modulus_volume;
       if (!c.admissible)
         {
           result.admissible = false;

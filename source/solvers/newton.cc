@@ -319,6 +319,19 @@ namespace Signorini
     }
 
     /**
+     * What the energy at @p e resolves: 1e3 eps (|strain energy| +
+     * |external work| + |E|), or the evaluation's own estimate of its
+     * round-off if that is larger (a barely strained stiff body).
+     */
+    double
+    energy_noise(const Evaluation &e, const double energy_scale)
+    {
+      return std::max(1e3 * std::numeric_limits<double>::epsilon() *
+                        (energy_scale + std::abs(e.value)),
+                      e.round_off);
+    }
+
+    /**
      * The backtracking line search of one Newton iteration: along the
      * direction d from the iterate u, whose energy is e and minus
      * gradient rhs. The ghosted vector holds u (ghosted) on entry and is
@@ -361,8 +374,7 @@ namespace Signorini
              NewtonMinimizer::Statistics &statistics)
       {
         const double slope = -(rhs * d); // g.d < 0
-        const double       noise =
-          1e3 * std::numeric_limits<double>::epsilon() * (energy_scale + std::abs(e.value));
+        const double noise = energy_noise(e, energy_scale);
         alpha = first_step_length();
         // The state u (ghosted) and g.u, for trials the objective limits
         // (taken before any trial overwrites the ghosted vector).
@@ -549,7 +561,8 @@ namespace Signorini
         forcing = linear_solver.forcing_term(residual, forcing_residual, forcing,
                                              tolerance);
         forcing_residual = residual;
-        const unsigned int linear_before = statistics.linear_iterations;
+        unsigned int linear_before   = statistics.linear_iterations;
+        unsigned int fallbacks_before = statistics.linear_fallbacks;
         if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
                                forcing, statistics))
           {
@@ -557,34 +570,100 @@ namespace Signorini
             return statistics;
           }
 
-        if (linear_solver.is_iterative())
-          progress << "      linear solve: "
-                   << statistics.linear_iterations - linear_before
-                   << " iterations to " << std::scientific << std::setprecision(1)
-                   << forcing << " |g|" << std::endl;
+        auto print_linear_solve = [&]() {
+          if (linear_solver.is_iterative())
+            progress << "      linear solve: "
+                     << statistics.linear_iterations - linear_before
+                     << " iterations to " << std::scientific << std::setprecision(1)
+                     << forcing << " |g|" << std::endl;
+        };
+        print_linear_solve();
+
+        // An inexact direction (an iterative solve stopped at the forcing
+        // term) cannot be judged in the round-off regime: the energy does
+        // not resolve the decrease it promises, and the correction is only
+        // as small as its solve is accurate. The regime: a gradient as large
+        // as the forces themselves (the force scale, itself round-off in an
+        // unstrained body) whose promised decrease the energy cannot see.
+        // There, and after a line search that failed on an inexact
+        // direction, the Newton step is solved again to the fixed tolerance
+        // (a true Newton step only: a shifted or convexified Hessian's is
+        // not one), and the increment test below may end the iteration.
+        // Without it, a step whose answer is a rigid motion (the ironing
+        // die before it touches, under CG) wandered in round-off until the
+        // line search gave up. A converging loaded state (gradient far
+        // below the force scale) keeps its inexact directions.
+        const double fixed_tolerance = linear_solver.get_parameters().relative_tolerance;
+        auto true_newton_step = [&]() {
+          return statistics.regularized_steps + statistics.convexified_steps ==
+                 regularized_before;
+        };
+        // A solve that fell back to the direct solver is exact already.
+        auto solved_exactly = [&]() {
+          return forcing <= fixed_tolerance ||
+                 statistics.linear_fallbacks > fallbacks_before;
+        };
+        auto can_solve_again = [&]() {
+          return linear_solver.is_iterative() && !solved_exactly() &&
+                 true_newton_step();
+        };
+        auto solve_again = [&]() {
+          forcing = fixed_tolerance;
+          progress << "      solved again to the fixed tolerance" << std::endl;
+          linear_before    = statistics.linear_iterations;
+          fallbacks_before = statistics.linear_fallbacks;
+          const bool found = descent_direction(objective, u, ghosted, constraints,
+                                               hessian, rhs, d, forcing, statistics);
+          print_linear_solve();
+          return found;
+        };
+        if (can_solve_again() && residual >= 0.1 * e.force_scale &&
+            rhs * d <= 1e3 * energy_noise(e, energy_scale) && !solve_again())
+          {
+            statistics.reason = "no descent direction found" + linear_cause(statistics);
+            return statistics;
+          }
 
         // A correction below round-off of the geometry: nothing is left
         // to gain (the gradient is round-off, whatever its units). Only a
         // true Newton step says so (and only one solved to the fixed
         // tolerance: an inexact one may just be short).
-        if (statistics.regularized_steps + statistics.convexified_steps ==
-              regularized_before &&
-            forcing <= linear_solver.get_parameters().relative_tolerance &&
-            parameters.increment_tolerance > 0. && length_scale > 0. &&
-            d.linfty_norm() <= parameters.increment_tolerance * length_scale)
-          {
-            progress << "      Newton correction " << std::scientific
-                     << std::setprecision(2) << d.linfty_norm()
-                     << " is below the increment tolerance" << std::endl;
-            statistics.converged = true;
-            return statistics;
-          }
+        auto below_increment_tolerance = [&]() {
+          if (true_newton_step() && solved_exactly() &&
+              parameters.increment_tolerance > 0. && length_scale > 0. &&
+              d.linfty_norm() <= parameters.increment_tolerance * length_scale)
+            {
+              progress << "      Newton correction " << std::scientific
+                       << std::setprecision(2) << d.linfty_norm()
+                       << " is below the increment tolerance" << std::endl;
+              statistics.converged = true;
+              return true;
+            }
+          return false;
+        };
+        if (below_increment_tolerance())
+          return statistics;
 
         // Backtracking line search on the energy.
-        TimerOutput::Scope scope(timer, "line search");
-        LineSearch         line_search(parameters, length_scale, progress, objective,
-                                       constraints, u, ghosted, rhs, d);
-        if (!line_search.search(e, residual, energy_scale, trial, statistics))
+        LineSearch line_search(parameters, length_scale, progress, objective,
+                               constraints, u, ghosted, rhs, d);
+        auto       search = [&]() {
+          TimerOutput::Scope scope(timer, "line search");
+          return line_search.search(e, residual, energy_scale, trial, statistics);
+        };
+        bool found = search();
+        if (!found && can_solve_again())
+          {
+            if (!solve_again())
+              {
+                statistics.reason = "no descent direction found" + linear_cause(statistics);
+                return statistics;
+              }
+            if (below_increment_tolerance())
+              return statistics;
+            found = search();
+          }
+        if (!found)
           {
             statistics.reason =
               "the line search found no admissible decrease of the energy "
@@ -592,7 +671,6 @@ namespace Signorini
               " backtracks";
             return statistics;
           }
-        scope.stop();
         if (line_search.alpha < 1.)
           progress << "      line search: step length " << line_search.alpha
                    << std::endl;

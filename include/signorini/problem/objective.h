@@ -24,6 +24,14 @@ namespace Signorini
     double external_work = 0.;
     double min_J         = std::numeric_limits<double>::max();
     double force_scale   = 0.;
+    /**
+     * The round-off of value, estimated as machine epsilon times the sum
+     * over the quadrature points of the shear modulus times JxW: an
+     * energy density is a difference of O(mu) terms, so its error is
+     * about eps mu whatever the strain (a stiff body moved rigidly has an
+     * energy of pure round-off).
+     */
+    double round_off     = 0.;
     bool   admissible    = true;
   };
 
