@@ -43,6 +43,8 @@ namespace Signorini
     report.solver           = Parameters::selection_name(parameters.solver.method,
                                                   Parameters::Solver::methods());
     report.linear_solver    = parameters.solver.linear.name();
+    report.iterative_linear_solver =
+      parameters.solver.linear.type != LinearSolver::Parameters::Type::direct;
     for (const auto &body : parameters.bodies)
       report.materials.push_back(body.material->name());
 
@@ -166,6 +168,11 @@ namespace Signorini
     record.linear_iterations = stats.linear_iterations;
     record.linear_solves     = stats.linear_solves;
     record.linear_fallbacks  = stats.linear_fallbacks;
+    // The solver's count since it was made (setup keeps it; a restart
+    // starts it again at 0).
+    const unsigned int builds = solver->n_preconditioner_builds();
+    record.amg_builds         = builds - std::min(builds, amg_builds_counted);
+    amg_builds_counted        = builds;
     record.residual          = stats.residual;
     record.energy            = stats.evaluation.value;
     record.min_J             = stats.evaluation.min_J;

@@ -83,6 +83,13 @@ namespace Signorini
       Json &solver = j["solver"];
       solver["method"]        = report.solver;
       solver["linear solver"] = report.linear_solver;
+      if (report.iterative_linear_solver)
+        {
+          unsigned int builds = 0;
+          for (const auto &step : report.steps)
+            builds += step.amg_builds;
+          solver["AMG builds"] = builds;
+        }
     }
 
     /// The contact model's and the step solver's contact entries, and the
@@ -130,6 +137,8 @@ namespace Signorini
           o["linear iterations"] = s.linear_iterations;
           o["linear solves"]     = s.linear_solves;
           o["linear fallbacks"]  = s.linear_fallbacks;
+          if (report.iterative_linear_solver)
+            o["AMG builds"] = s.amg_builds;
           o["cuts before"]       = s.cuts_before;
           o["residual"]          = s.residual;
           o["energy"]            = s.energy;

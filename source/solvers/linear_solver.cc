@@ -703,6 +703,7 @@ namespace Signorini
     amg.pattern_hash = pattern;
     amg.values_hash  = values;
     amg.scaled       = false;
+    ++amg.n_builds;
   }
 
   namespace

@@ -51,7 +51,7 @@ namespace Signorini
   namespace Checkpoint
   {
     /// Version of the checkpoint format (state files and their order).
-    constexpr unsigned int format_version = 5; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back
+    constexpr unsigned int format_version = 6; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back; 6: AMG builds in the step record
 
     /// What every state file starts with; read before anything is built.
     struct Header

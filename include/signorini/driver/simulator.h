@@ -156,6 +156,8 @@ namespace Signorini
     std::unique_ptr<Scene<dim>>         scene;
     std::unique_ptr<Problem<dim>>       problem;
     std::unique_ptr<StepSolver<dim>>    solver;
+    /// The solver's AMG builds already put into a step record.
+    unsigned int                        amg_builds_counted = 0;
     std::unique_ptr<Postprocessor<dim>> postprocessor;
     VectorType                          failed_iterate;
     Report                              report;

@@ -29,6 +29,9 @@ namespace Signorini
       unsigned int linear_iterations;
       unsigned int linear_solves = 0; // linear solves of the step (iterative or direct)
       unsigned int linear_fallbacks = 0; // iterative solves redone directly
+      /// AMG hierarchies built since the previous step ended (cut
+      /// attempts included; CG or MINRES + AMG only).
+      unsigned int amg_builds = 0;
       unsigned int cuts_before;
       double       residual;
       double       energy;
@@ -53,7 +56,7 @@ namespace Signorini
         ar &linear_fallbacks &cuts_before &residual &energy &min_J &stages;
         ar &solver_status &active_nodes &penetration_ratio;
         ar &contact_force_vector &contact_moment &contact_area &has_pairs &pairs;
-        ar &linear_solves;
+        ar &linear_solves &amg_builds;
       }
     };
 
@@ -96,6 +99,7 @@ namespace Signorini
     std::string              solver;         // Solver > Method
     std::string              iteration_name = "newton"; // or "ipopt"
     std::string              linear_solver;
+    bool                     iterative_linear_solver = false; // CG or MINRES + AMG
     /// "running", "converged", "failed" or "interrupted".
     std::string              status = "not run";
     std::string              reason;

@@ -187,7 +187,9 @@ namespace Signorini
     unsigned int
     n_numeric_factorizations() const;
 
-    /// How many AMG hierarchies the kept-preconditioner CG built.
+    /// How many AMG hierarchies this solver built (ML, GAMG or BoomerAMG;
+    /// kept across solves or, without 'Keep preconditioner', one for each
+    /// new matrix).
     unsigned int
     n_preconditioner_builds() const
     {

@@ -73,6 +73,14 @@ namespace Signorini
       return "newton";
     }
 
+    /// How many AMG hierarchies the step solver's linear solver has built
+    /// so far (0 with the direct solver, and for Ipopt's own solves).
+    unsigned int
+    n_preconditioner_builds() const
+    {
+      return linear_solver.n_preconditioner_builds();
+    }
+
     /// The solver's entries of summary.json's "contact" block.
     virtual void
     write_contact_summary(Json &block) const
