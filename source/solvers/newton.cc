@@ -692,8 +692,7 @@ namespace Signorini
                              VectorType                      &ghosted,
                              MatrixType                      &hessian,
                              VectorType                      &rhs,
-                             std::string                     &reason,
-                             const bool                       only_if_lower)
+                             std::string                     &reason)
   {
     Evaluation e;
     {
@@ -742,11 +741,12 @@ namespace Signorini
           }
         scale = scale > 1. / 64. ? scale / 2. : 0.;
       }
-    if (only_if_lower && scale > 0.)
+    if (scale > 0.)
       {
         // The Dirichlet increment alone, if it is lower (a Newton step from
         // a start near the solution can climb where the Hessian is
-        // indefinite).
+        // indefinite; a linear step towards a first touch goes through the
+        // other body, whose contact term H does not have yet).
         VectorType alone(u);
         alone.add(1., dirichlet);
         Evaluation a;

@@ -220,7 +220,7 @@ namespace Signorini
                            const double                 time,
                            StepStatistics              &stats)
   {
-    const bool carried = carry_along(time);
+    carry_along(time);
     if (!scene.bc.has_prescribed_motion())
       return true;
     scene.solution_ghosted = scene.solution;
@@ -228,7 +228,7 @@ namespace Signorini
     std::string                     reason;
     if (!newton.predictor(objective, increment, scene.solution,
                           scene.solution_ghosted, scene.hessian, scene.rhs,
-                          reason, carried))
+                          reason))
       {
         stats.reason = "predictor: " + reason;
         return false;

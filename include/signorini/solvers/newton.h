@@ -132,9 +132,12 @@ namespace Signorini
      * 1/2, ..., 1/64, 0), so that a linear step that overshoots (through
      * the contact layer, or to J <= 0) does not cost a load step cut.
      * Returns false (u unchanged) if even the Dirichlet increment alone
-     * is inadmissible. With @p only_if_lower the step is kept only if its
-     * energy is below that of the Dirichlet increment alone (for a start
-     * that is already close: TransportPredictor).
+     * is inadmissible. A step with some of its free part is kept only if
+     * its energy is below that of the Dirichlet increment alone: from a
+     * start that is already close (TransportPredictor) the exact Hessian
+     * can be indefinite and the step climb, and a step whose linear model
+     * misses a contact that starts in it (the first touch: no contact
+     * term in H) pushes one body into the other.
      */
     bool
     predictor(Objective                       &objective,
@@ -143,8 +146,7 @@ namespace Signorini
               VectorType                      &ghosted,
               MatrixType                      &hessian,
               VectorType                      &rhs,
-              std::string                     &reason,
-              const bool                       only_if_lower = false);
+              std::string                     &reason);
 
   private:
     bool

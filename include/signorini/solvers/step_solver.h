@@ -126,7 +126,8 @@ namespace Signorini
      * state along for the step to @p time (TransportPredictor) and say so
      * on the progress stream; true if it moved the state. The Newton-based
      * step solvers call it first (through predict(), whose tangent step
-     * then has to lower the energy to be kept).
+     * is kept only if it lowers the energy below the Dirichlet increment
+     * alone's).
      */
     bool
     carry_along(const double time);
