@@ -4,8 +4,9 @@
 // die 8 x 1 x 8; 5484 DoFs), the whole path in 80 load steps, integral
 // form; the checks are those of ironing_check.h with the vertical along z.
 // With the scene's transport predictor (the die moves one block face per
-// step) the path takes 528 Newton iterations on 1 and 2 ranks, printed
-// (533 before the tangent predictor's energy check at every step),
+// step) the path takes 416 Newton iterations on 1 and 2 ranks, printed
+// (533 before the tangent predictor's energy check at every step, 528
+// before Newton lengthened the convexified steps of a crawling iteration),
 // about 23 s (2580 and 97 s without it; the test ran on a mesh of block faces of 1/3 before, where
 // the die moves 3/4 of a face per step and the predictor's interpolation
 // of the bulge gains less: 1392 iterations against 1631, with one step
