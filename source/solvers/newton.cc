@@ -400,9 +400,9 @@ namespace Signorini
           return true;
         if (!backtrack(e, slope, noise, u_ghosted, rhs_u, trial, statistics))
           return false;
-        // A direction of the convexified contact Hessian, whose full step
-        // was accepted as it is, when the caller allows it (the iteration
-        // crawls): the exact Hessian has negative curvature there, the
+        // A direction of the convexified (or shifted) Hessian, whose full
+        // step was accepted as it is, when the caller allows it (the
+        // iteration crawls): the exact Hessian has negative curvature there, the
         // convexified one overestimates it, and the full step may be far
         // short of the minimum along d (one pass on the ironing scene's
         // mesh at 160 steps crawled 2e-2 of energy per iteration for 100
@@ -433,8 +433,9 @@ namespace Signorini
             const double next = 2. * alpha;
             candidate         = u;
             candidate.add(next, d);
-            ghosted                  = candidate;
-            const Evaluation next_e = objective.evaluate(ghosted, constraints, nullptr, nullptr);
+            ghosted = candidate;
+            const Evaluation next_e =
+              objective.evaluate(ghosted, constraints, nullptr, nullptr);
             if (!next_e.admissible || !(next_e.value < trial_e.value) ||
                 next_e.value > e.value + parameters.armijo_c1 * next * slope)
               break;
@@ -618,7 +619,7 @@ namespace Signorini
         forcing = linear_solver.forcing_term(residual, forcing_residual, forcing,
                                              tolerance);
         forcing_residual = residual;
-        unsigned int linear_before   = statistics.linear_iterations;
+        unsigned int linear_before    = statistics.linear_iterations;
         unsigned int fallbacks_before = statistics.linear_fallbacks;
         if (!descent_direction(objective, u, ghosted, constraints, hessian, rhs, d,
                                forcing, statistics))
