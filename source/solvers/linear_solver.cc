@@ -660,6 +660,55 @@ namespace Signorini
     }
   } // namespace
 
+  bool
+  LinearSolver::uses_ml() const
+  {
+    return parameters.type != Parameters::Type::cg_amg ||
+           parameters.amg_package == Parameters::AmgPackage::ml;
+  }
+
+  void
+  LinearSolver::build_amg(const MatrixType &H, const Epetra_Vector *s_inv) const
+  {
+    amg.preconditioner.reset();
+    amg.petsc.reset();
+    if (uses_ml())
+      {
+        Teuchos::ParameterList              list;
+        std::unique_ptr<Epetra_MultiVector> modes;
+        amg_parameters(H, list, modes);
+        if (modes && s_inv)
+          for (int m = 0; m < modes->NumVectors(); ++m)
+            for (int i = 0; i < s_inv->MyLength(); ++i)
+              (*modes)[m][i] *= (*s_inv)[i];
+        amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg.preconditioner->initialize(H, list);
+      }
+    else
+      {
+        // PETSc's copy of H reads the modes in the order of H's rows (GAMG
+        // uses them; BoomerAMG takes the block size only).
+        const unsigned int               n_modes = n_amg_modes();
+        std::vector<std::vector<double>> scaled;
+        if (s_inv)
+          {
+            scaled.resize(n_modes);
+            for (unsigned int m = 0; m < n_modes; ++m)
+              {
+                scaled[m].resize(s_inv->MyLength());
+                for (int i = 0; i < s_inv->MyLength(); ++i)
+                  scaled[m][i] =
+                    null_space.modes[m][null_space.owned.index_within_set(s_inv->Map().GID64(i))] *
+                    (*s_inv)[i];
+              }
+          }
+        amg.petsc = std::make_unique<PETScAMG>(petsc_package(parameters.amg_package));
+        amg.petsc->initialize(H.trilinos_matrix(), s_inv ? scaled : null_space.modes, n_modes,
+                              null_space.dofs_per_node);
+      }
+    ++amg.n_builds;
+  }
+
   void
   LinearSolver::prepare_amg(const MatrixType &H) const
   {
@@ -667,12 +716,8 @@ namespace Signorini
     const MPI_Comm          comm    = H.get_mpi_communicator();
     const std::size_t       pattern = sparsity_pattern_hash(A);
     const std::size_t       values  = values_hash(A, comm);
-    // PETSc's hierarchy for CG with another 'AMG package', ML's otherwise
-    // (MINRES too).
-    const bool ml = parameters.type != Parameters::Type::cg_amg ||
-                    parameters.amg_package == Parameters::AmgPackage::ml;
     // The hierarchy refers to the matrix object it was built from.
-    const bool same_here = (ml ? !!amg.preconditioner : !!amg.petsc) && !amg.scaled &&
+    const bool same_here = (uses_ml() ? !!amg.preconditioner : !!amg.petsc) && !amg.scaled &&
                            amg.matrix == &A && amg.pattern_hash == pattern;
     const bool same_pattern = Utilities::MPI::min(same_here ? 1 : 0, comm) == 1;
     // Only for the very matrix it was built from: a hierarchy kept for
@@ -684,26 +729,11 @@ namespace Signorini
     if (same_pattern && amg.values_hash == values)
       return;
 
-    amg.preconditioner.reset();
-    amg.petsc.reset();
-    if (ml)
-      {
-        Teuchos::ParameterList              list;
-        std::unique_ptr<Epetra_MultiVector> modes;
-        amg_parameters(H, list, modes);
-        amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg.preconditioner->initialize(H, list);
-      }
-    else
-      {
-        amg.petsc = std::make_unique<PETScAMG>(petsc_package(parameters.amg_package));
-        amg.petsc->initialize(A, null_space.modes, n_amg_modes(), null_space.dofs_per_node);
-      }
+    build_amg(H, nullptr);
     amg.matrix       = &A;
     amg.pattern_hash = pattern;
     amg.values_hash  = values;
     amg.scaled       = false;
-    ++amg.n_builds;
   }
 
   namespace
@@ -773,48 +803,18 @@ namespace Signorini
     } scaled(A, s, s_inv);
 
     const std::size_t pattern = sparsity_pattern_hash(A);
-    const bool        ml      = parameters.amg_package == Parameters::AmgPackage::ml;
+    const bool        ml      = uses_ml();
     const bool same_here = (ml ? !!amg.preconditioner : !!amg.petsc) && amg.scaled &&
                            amg.matrix == &A && amg.pattern_hash == pattern && !amg.rebuild;
     bool keep = Utilities::MPI::min(same_here ? 1 : 0, H.get_mpi_communicator()) == 1;
     const auto build = [&]() {
-      amg.preconditioner.reset();
-      amg.petsc.reset();
-      if (ml)
-        {
-          Teuchos::ParameterList              list;
-          std::unique_ptr<Epetra_MultiVector> modes;
-          amg_parameters(H, list, modes);
-          // The near null space of H_s is S^-1 times that of H.
-          if (modes)
-            for (int m = 0; m < modes->NumVectors(); ++m)
-              for (int i = 0; i < s.MyLength(); ++i)
-                (*modes)[m][i] *= s_inv[i];
-          amg.preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          amg.preconditioner->initialize(H, list);
-        }
-      else
-        {
-          // The same for PETSc's copy of H_s (GAMG reads the modes).
-          const unsigned int               n_modes = n_amg_modes();
-          std::vector<std::vector<double>> modes(n_modes);
-          for (unsigned int m = 0; m < n_modes; ++m)
-            {
-              modes[m].resize(s.MyLength());
-              for (int i = 0; i < s.MyLength(); ++i)
-                modes[m][i] =
-                  null_space.modes[m][null_space.owned.index_within_set(s.Map().GID64(i))] *
-                  s_inv[i];
-            }
-          amg.petsc = std::make_unique<PETScAMG>(petsc_package(parameters.amg_package));
-          amg.petsc->initialize(A, modes, n_modes, null_space.dofs_per_node);
-        }
+      // The near null space of H_s is S^-1 times that of H.
+      build_amg(H, &s_inv);
       amg.matrix       = &A;
       amg.pattern_hash = pattern;
       amg.values_hash  = 0;
       amg.scaled       = true;
       amg.rebuild      = false;
-      ++amg.n_builds;
     };
     if (!keep)
       build();

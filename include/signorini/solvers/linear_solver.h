@@ -315,6 +315,21 @@ namespace Signorini
     void
     prepare_amg(const MatrixType &H) const;
 
+    /// Whether the hierarchy is ML's (MINRES, or CG with 'AMG package =
+    /// ML'), not a PETSc package's.
+    bool
+    uses_ml() const;
+
+    /**
+     * A new hierarchy (ML's or the PETSc package's) for @p H, replacing
+     * the one held, and counted. With @p s_inv (H scaled by S = diag^-1/2,
+     * its inverse as a vector of H's rows) the near null space is S^-1
+     * times the rigid motions, that of the scaled matrix. The caller sets
+     * the rest of the AmgState.
+     */
+    void
+    build_amg(const MatrixType &H, const Epetra_Vector *s_inv) const;
+
     /**
      * CG on @p H with an AMG hierarchy kept across solves. H = S^-1 H_s
      * S^-1 with S = diag(H)^-1/2 and H_s the scaled matrix, whose diagonal
