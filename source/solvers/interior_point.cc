@@ -75,6 +75,21 @@ namespace Signorini
                       Patterns::Double(0.),
                       "Slacks start at s_k = max(g_k, this * h_k) on a cold "
                       "start (at most this * h_k above g_k when warm) [-].");
+    prm.declare_entry("Barrier update",
+                      "capped",
+                      Patterns::Selection("capped|Mehrotra"),
+                      "Mehrotra: each iteration's barrier is sigma mu_avg, "
+                      "sigma = (mu_aff / mu_avg)^3, and may rise above the "
+                      "previous one; capped: the same, but never above the "
+                      "previous iteration's barrier (the pure centring step, "
+                      "tried when no other step lowers the merit function, "
+                      "still raises it). A rise met a contact node whose "
+                      "slack the fraction to the boundary had taken to 1e-9 "
+                      "with a multiplier of 1e-8: its barrier force mu/s was "
+                      "twice the load, and the step that followed inverted "
+                      "elements (prm/hertz_sphere.prm at 1.2e6 DoFs: 10 "
+                      "iterations with Mehrotra, 8 capped; "
+                      "doc/performance.md).");
     prm.declare_entry("Warm start",
                       "true",
                       Patterns::Bool(),
@@ -170,6 +185,7 @@ namespace Signorini
     initial_barrier        = prm.get_double("Initial barrier");
     warm_start_barrier     = prm.get_double("Warm start barrier");
     initial_slack          = prm.get_double("Initial slack");
+    capped_barrier         = prm.get("Barrier update") == "capped";
     warm_start             = prm.get_bool("Warm start");
     active_set_polish      = prm.get_bool("Active-set polish");
     {

@@ -445,7 +445,13 @@ namespace Signorini
         gap_aff += (s[k] + alpha_s_aff * ds_aff[k]) * (z[k] + alpha_z_aff * dz_aff[k]);
     const double mu_aff = Utilities::MPI::sum(gap_aff, comm) / m;
     const double sigma  = std::min(1., std::pow(mu_aff / r.mu_average, 3));
-    mu = std::max(sigma * r.mu_average, 0.1 * parameters.tolerance * unit);
+    // Capped: never above the previous iteration's barrier (mu_0 at the
+    // first), see "Barrier update".
+    const double previous = mu;
+    mu                    = sigma * r.mu_average;
+    if (parameters.capped_barrier && previous > 0.)
+      mu = std::min(mu, previous);
+    mu = std::max(mu, 0.1 * parameters.tolerance * unit);
     return true;
   }
 

@@ -20,6 +20,9 @@ namespace Signorini
     double       initial_barrier        = 1e-1;
     double       warm_start_barrier     = 1e-3;
     double       initial_slack          = 1e-2;
+    /// Mehrotra's barrier sigma mu_avg is capped at the previous
+    /// iteration's barrier ("Barrier update = capped"), or may rise.
+    bool         capped_barrier         = true;
     bool         warm_start             = true;
     bool         active_set_polish      = true;
     /// Active-set updates allowed inside one polish attempt, or automatic
