@@ -48,18 +48,17 @@ namespace Signorini
   }
 
   template <int dim>
-  bool
+  void
   StepSolver<dim>::carry_along(const double time)
   {
     if (!transport)
-      return false;
+      return;
     TimerOutput::Scope scope(timer, "transport");
     const auto         result = transport->apply(scene, time);
     if (result.shift.norm() > 0.)
       progress << "    carried along by d = (" << result.shift << "): "
                << result.carried << " nodes from X - d, " << result.kept
                << " kept" << std::endl;
-    return result.shift.norm() > 0.;
   }
 
   template <int dim>

@@ -124,12 +124,11 @@ namespace Signorini
     /**
      * With Load stepping > Sliding direction: carry the previous step's
      * state along for the step to @p time (TransportPredictor) and say so
-     * on the progress stream; true if it moved the state. The Newton-based
-     * step solvers call it first (through predict(), whose tangent step
-     * is kept only if it lowers the energy below the Dirichlet increment
-     * alone's).
+     * on the progress stream. The Newton-based step solvers call it first
+     * (through predict(), whose tangent step is kept only if it lowers the
+     * energy below the Dirichlet increment alone's, carried or not).
      */
-    bool
+    void
     carry_along(const double time);
 
     /**
