@@ -10,7 +10,11 @@
 // exceeds its height, 'Orientation = up' on a shape that is not a ball
 // part) and benchmarks.md 5 (missing or unreadable files,
 // unknown keys, values out of range, a mesh file with no contact boundary,
-// contradictory boundary conditions).
+// contradictory boundary conditions), and issue 52's: a material's
+// modulus left out (no default is taken), geometric sizes no mesh can hold
+// (a radius of 1e308 or 1e-300 ended in exit 1 from deal.II's mapping), and
+// a body that nothing holds where the load pushes it (the run ends at once
+// with exit 3 and the reason, instead of crawling).
 
 #include "run_output.h"
 
@@ -29,6 +33,8 @@ subsection Body 1
     set Subdivisions = 2, 2
   end
   subsection Material
+    set Young's modulus = 1
+    set C10 = 1
     @MATERIAL@
   end
 end
@@ -46,6 +52,11 @@ subsection Output
   set Format = none
 end
 @EXTRA@
+subsection Body 2
+  subsection Material
+    set Young's modulus = 1
+  end
+end
 )";
 
   std::string
@@ -136,6 +147,13 @@ main()
   run_case("negative_modulus",
            scene({{"@MATERIAL@", "set Young's modulus = -3"}}), out);
   run_case("zero_modulus", scene({{"@MATERIAL@", "set Young's modulus = 0"}}), out);
+  // A modulus left out is an error, not the declared default (E = 1 made a
+  // scene 200 times softer and failed after 90 s of step cuts).
+  run_case("missing_young_modulus",
+           replace(scene({}), "set Young's modulus = 1\n", ""), out);
+  run_case("missing_c10",
+           replace(scene({{"@MATERIAL@", "set Model = ELAS_HYPER"}}), "set C10 = 1\n", ""),
+           out);
   run_case("incompressible_nu",
            scene({{"@MATERIAL@", "set Poisson's ratio = 0.5"}}), out);
   run_case("compressible_nu_above_half",
@@ -274,6 +292,29 @@ main()
   run_case("ball_part_in_2d",
            replace(scene({}), "set Subdivisions = 2, 2", "set Shape = octant ball"), out);
   run_case("quarter_disk_in_3d", shape_3d("set Shape = quarter disk"), out);
+  // Sizes no mesh can hold, and a body too small for where it is.
+  run_case("ball_radius_huge",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    set Radius = 1e308"),
+           out);
+  run_case("ball_radius_tiny",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    set Radius = 1e-300"),
+           out);
+  run_case("quarter_disk_radius_huge",
+           replace(scene({}), "set Subdivisions = 2, 2",
+                   "set Shape = quarter disk\n    set Center = 0, 1\n"
+                   "    set Radius = 1e308"),
+           out);
+  run_case("disk_too_small_for_its_center",
+           replace(scene({}), "set Subdivisions = 2, 2",
+                   "set Shape = half disk\n    set Center = 0, 1e12\n"
+                   "    set Radius = 1e-3"),
+           out);
+  run_case("rectangle_corner_huge",
+           replace(scene({}), "set Subdivisions = 2, 2",
+                   "set Subdivisions = 2, 2\n    set Upper corner = 1e308, 1"),
+           out);
   run_case("huge_global_refinements",
            scene({{"@MESH@", "set Global refinements = 20"}}), out);
   run_case("contact_psi_does_not_parse",
@@ -286,6 +327,24 @@ main()
            out);
   run_case("contact_with_plain_newton",
            with_contact("3", "set Shape = plane", "newton"), out);
+  // A body nothing holds where the load pushes it: body 1 is fixed in x
+  // only and pushed down (-y), and the foundation lies 1e308 below, or
+  // there is no contact at all. Both end at once with exit 3, the reason
+  // in summary.json, and an output folder.
+  const std::string push_down =
+    "set Traction boundaries = 3\n  set Traction = 0; -0.01*t";
+  run_case("unbounded_foundation_out_of_reach",
+           replace(scene({{"@BC@", push_down},
+                          {"@EXTRA@",
+                           replace(replace(replace(contact, "@ID@", "2"), "@PSI@",
+                                           "set Shape = plane\n    set Height = -1e308"),
+                                   "@METHOD@", "interior-point")}}),
+                   "set Fixed boundaries = 2: xy", "set Fixed boundaries = 2: x"),
+           out);
+  run_case("unbounded_without_contact",
+           replace(scene({{"@BC@", push_down}}), "set Fixed boundaries = 2: xy",
+                   "set Fixed boundaries = 2: x"),
+           out);
   auto with_hertz = [&](const std::string &lines) {
     return replace(with_contact("3", "set Shape = plane", "newton-penalty"),
                    "  subsection Foundation",
@@ -298,7 +357,8 @@ main()
            scene({{"@EXTRA@", "subsection Solver\n  set Method = newton-penalty\nend"}}),
            out);
   run_case("incompressible_without_ipopt",
-           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Incompressible = true"}}),
+           scene({{"@MATERIAL@", "set Model = ELAS_HYPER\n    set Incompressible = true"},
+                  {"@EXTRA@", "subsection Solver\n  set Method = newton\nend"}}),
            out);
   run_case("incompressible_neo_hookean",
            scene({{"@MATERIAL@", "set Incompressible = true"},

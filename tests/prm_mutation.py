@@ -113,6 +113,12 @@ SCENES = [
      False),
     ("default", "default.prm", 2,
      [("Global refinements", "2"), ("Local refinements", "2")], False),
+    # 3D contact and two bodies (issue 52: a foundation out of reach, a
+    # radius of 1e308 and a modulus left out went wrong there).
+    ("hertz_sphere", "hertz_sphere.prm", 2,
+     [("Global refinements", "1"), ("Local refinements", "1")], False),
+    ("hertz_block", "hertz_block.prm", 2,
+     [("Global refinements", "0"), ("Local refinements", "2")], False),
 ]
 
 # Entries whose (valid) value can legitimately make a run long.
@@ -133,7 +139,8 @@ COST_ENTRIES = {
 # Valid alternatives of the selections (a valid value that may not fit
 # the rest of the scene).
 SELECTIONS = {
-    "Method": ["newton", "newton-penalty", "ipopt"],
+    "Method": ["newton", "newton-penalty", "ipopt", "interior-point",
+               "automatic"],
     "Contact > Type": ["none", "rigid foundation", "two bodies"],
     "Linear solver > Type": ["direct", "cg-amg", "minres-amg"],
     "Model": ["neo-Hookean", "ELAS_HYPER", "Saint Venant-Kirchhoff",
@@ -151,7 +158,8 @@ SELECTIONS = {
 
 # Value palettes.
 WRONG_FOR_NUMBER = ["abc", "1.2.3", "1,5", "0x1A", "true", "1e", "--1",
-                    "2 3", "one", "1O", "\u00bd", "1e+", ".", "+-3"]
+                    "2 3", "one", "1O", "\u00bd", "1e+", ".", "+-3", "3,",
+                    "1;2"]
 WRONG_FOR_WORD = ["3", "-1", "0.5", "1e300", "ELAS HYPER", "Neo-Hookean",
                   "rigid_foundation", "yes please", "newton penalty",
                   "\u00e9lastique"]
@@ -159,10 +167,12 @@ WRONG_FOR_BOOL = ["maybe", "2", "truee", "on", "1.0"]
 ODD_TEXT = ['"quoted"', "back\\slash", "tab\there",
             "\u00fcn\u00efc\u00f8d\u00e9",
             "a,b", "{}", "a/b/../../c", "  padded  ", "%s%n%d", "x" * 300]
-HUGE = ["1e300", "-1e300", "1e20", "1e309", "-1e309", "2147483648",
+HUGE = ["1e300", "-1e300", "1e20", "1e309", "-1e309", "1e308", "-1e308",
+        "1e400", "2147483648",
         "4294967296", "9223372036854775808", "123456789012345678901234567890",
         "1.7976931348623157e308"]
-TINY = ["1e-300", "0", "-0", "4.9e-324", "1e-320", "0.0", "-0.0", "1e-20"]
+TINY = ["1e-300", "0", "-0", "4.9e-324", "1e-320", "0.0", "-0.0", "1e-20",
+        "1e-12"]
 NONFINITE = ["nan", "-nan", "NaN", "inf", "-inf", "Inf", "infinity"]
 BAD_EXPRESSIONS = ["1/0", "sqrt(-1)", "log(0)", "exp(1000*(t+1))",
                    "1e300*1e300*t", "(t", "t)", "tt", "x*q", "sin", "0*",

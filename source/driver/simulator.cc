@@ -8,6 +8,7 @@
 #include <signorini/output/contact_report.h>
 #include <signorini/output/error_estimate.h>
 #include <signorini/output/summary.h>
+#include <signorini/problem/support.h>
 #include <signorini/scene/refinement.h>
 
 #include <deal.II/base/mpi.h>
@@ -927,7 +928,12 @@ namespace Signorini
         if (!first_frame_error.empty())
           throw OutputFailure(first_frame_error);
         if (report.cycles.empty())
-          load_path(run_timer);
+          {
+            if (restart_folder.empty())
+              check_support(*scene, *problem->energy, problem->contact.get(),
+                            parameters.load_stepping.end_time);
+            load_path(run_timer);
+          }
         refinement_cycles(run_timer);
         report.status = "converged";
       }

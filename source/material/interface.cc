@@ -144,7 +144,8 @@ namespace Signorini
           enumerate(laws_with([](const LawEntry &law) {
             return law.uses_young_poisson;
           })) +
-          "; must be > 0.");
+          "; must be > 0, and must be set: no default is taken.",
+        /*has_to_be_set=*/true);
       prm.declare_entry(
         "Poisson's ratio",
         "0.3",

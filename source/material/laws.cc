@@ -4,6 +4,7 @@
 
 #include <signorini/input_error.h>
 #include <signorini/material/laws.h>
+#include <signorini/parameters/lists.h>
 
 namespace Signorini
 {
@@ -29,7 +30,9 @@ namespace Signorini
       prm.declare_entry("C10",
                         "1",
                         Patterns::Double(),
-                        "ELAS_HYPER constant C10 [stress].");
+                        "ELAS_HYPER constant C10 [stress]; must be set: no "
+                        "default is taken.",
+                        /*has_to_be_set=*/true);
       prm.declare_entry("C01",
                         "0",
                         Patterns::Double(),
@@ -50,6 +53,7 @@ namespace Signorini
                                   const std::string &context)
     {
       ElasHyperLaw law;
+      require_set(prm, "C10", context);
       law.C10 = prm.get_double("C10");
       law.C01 = prm.get_double("C01");
       law.C20 = prm.get_double("C20");

@@ -4,6 +4,7 @@
 #include <signorini/material/laws.h>
 #include <signorini/material/linear_elastic.h>
 #include <signorini/material/registry.h>
+#include <signorini/parameters/lists.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -174,6 +175,7 @@ namespace Signorini
     lame_from_young_poisson(ParameterHandler  &prm,
                             const std::string &context)
     {
+      require_set(prm, "Young's modulus", context);
       const double E  = positive_constant(prm, context, "Young's modulus");
       const double nu = poisson_ratio(prm, context);
       return {E / (2. * (1. + nu)), E * nu / ((1. + nu) * (1. - 2. * nu))};

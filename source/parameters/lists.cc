@@ -3,11 +3,56 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <cctype>
 #include <cmath>
 #include <type_traits>
 
 namespace Signorini
 {
+  namespace
+  {
+    // ParameterHandler's own spelling of a name in an entry's path: every
+    // character but letters and digits as '_' and its two hex digits.
+    std::string
+    mangled(const std::string &name)
+    {
+      static const char *hex = "0123456789abcdef";
+      std::string        out;
+      for (const unsigned char c : name)
+        if (std::isalnum(c))
+          out += static_cast<char>(c);
+        else
+          {
+            out += '_';
+            out += hex[c / 16];
+            out += hex[c % 16];
+          }
+      return out;
+    }
+  } // namespace
+
+  void
+  require_set(const dealii::ParameterHandler &prm,
+              const std::string              &key,
+              const std::string              &context)
+  {
+    std::string path;
+    const std::string separator = " > ";
+    for (std::size_t start = 0; start <= context.size();)
+      {
+        const std::size_t end = context.find(separator, start);
+        path += mangled(context.substr(start, end - start)) + ".";
+        if (end == std::string::npos)
+          break;
+        start = end + separator.size();
+      }
+    path += mangled(key);
+    if (prm.get_entries_wrongly_not_set().count(path) > 0)
+      throw InputError(context + " > " + key,
+                       "must be set: the scene states no value, and the "
+                       "declared default is not meant to be used");
+  }
+
   template <typename T>
   std::vector<T>
   get_list(dealii::ParameterHandler &prm,

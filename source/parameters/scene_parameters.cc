@@ -198,7 +198,8 @@ namespace Signorini
         {Method::newton, "newton"},
         {Method::newton_penalty, "newton-penalty"},
         {Method::ipopt, "ipopt"},
-        {Method::interior_point, "interior-point"}};
+        {Method::interior_point, "interior-point"},
+        {Method::automatic, "automatic"}};
       return table;
     }
 
@@ -207,8 +208,14 @@ namespace Signorini
     {
       prm.enter_subsection("Solver");
       prm.declare_entry("Method",
-                        "newton",
+                        "automatic",
                         Patterns::Selection(selection_pattern(methods())),
+                        "automatic (the default): interior-point for a "
+                        "rigid foundation (the default scene's solver) and "
+                        "for incompressible bodies without contact, "
+                        "newton-penalty for two bodies (ipopt if a body is "
+                        "incompressible), newton without contact; the "
+                        "summary names the method used. "
                         "newton: Newton's method on the total potential "
                         "energy with an Armijo line search (no contact). "
                         "newton-penalty: the same on E + mu/3 sum w_k "
@@ -396,6 +403,17 @@ namespace Signorini
       prm.leave_subsection();
 
       contact.parse_parameters(prm, dim);
+      if (solver.method == Solver::Method::automatic)
+        {
+          const bool incompressible = !incompressible_ids().empty();
+          using Method              = Solver::Method;
+          solver.method =
+            !contact.active() ?
+              (incompressible ? Method::interior_point : Method::newton) :
+            contact.node_wise_constraints() ?
+              Method::interior_point :
+              (incompressible ? Method::ipopt : Method::newton_penalty);
+        }
       if (contact.active() && bodies.size() < contact.model->capabilities.bodies)
         throw InputError("Contact > Type",
                          contact.type() + " needs Body 2 > Active = true");

@@ -38,6 +38,40 @@ namespace Signorini
       return s.str();
     }
 
+    // The lengths a mesh can hold: a cell refined 30 times from a body of
+    // size in [1e-30, 1e30] keeps its Jacobian and the normal equations of
+    // its mapping (products of up to six lengths in 3D) within double's
+    // range; 1e308 overflowed them and 1e-300 underflowed them (deal.II's
+    // mapping then stopped the run: "Matrix of normal equations not
+    // positive definite"). And a body's size must be told apart from its
+    // position: below 1e-9 of its coordinates its vertices would coincide
+    // after refinement.
+    constexpr double min_length         = 1e-30;
+    constexpr double max_length         = 1e30;
+    constexpr double min_size_over_place = 1e-9;
+
+    /// InputError naming @p key unless @p size fits a mesh placed at
+    /// coordinates of magnitude up to @p place.
+    void
+    check_size(const double size, const double place, const std::string &key,
+               const std::string &value)
+    {
+      if (!(std::abs(place) <= max_length))
+        throw InputError(key, "'" + value + "' places the body beyond 1e30 "
+                              "(a mesh's coordinates must lie within +-1e30)");
+      if (!(size >= min_length && size <= max_length))
+        throw InputError(key, "'" + value + "' gives a size of " +
+                                format_count(size) +
+                                "; a mesh holds sizes in [1e-30, 1e30]");
+      if (!(size >= min_size_over_place * std::abs(place)))
+        throw InputError(key, "'" + value + "' gives a size of " +
+                                format_count(size) + " at coordinates of " +
+                                format_count(place) +
+                                ": below 1e-9 of them the mesh's vertices "
+                                "could not be told apart");
+    }
+
+
     /**
      * Throw an InputError when refining @p coarse_cells cells @p global
      * times would need more memory than this machine (or, on several
@@ -91,6 +125,19 @@ namespace Signorini
     check_cells(const Triangulation<dim> &tria, const std::string &file)
     {
       const double size = GridTools::diameter(tria);
+      for (const auto &vertex : tria.get_vertices())
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(std::abs(vertex[d]) <= max_length))
+            {
+              std::ostringstream msg;
+              msg << "the vertex (" << vertex
+                  << ") lies beyond 1e30: a mesh's coordinates must lie "
+                     "within +-1e30";
+              throw InputError(file, msg.str());
+            }
+      if (!(size >= min_length))
+        throw InputError(file, "the mesh's size is " + format_count(size) +
+                                 "; a mesh holds sizes in [1e-30, 1e30]");
       for (const auto &cell : tria.active_cell_iterators())
         {
           std::vector<unsigned int> sorted;
@@ -375,6 +422,27 @@ namespace Signorini
                                  "than " + format_count(max_coarse_cells) +
                                  " cells");
           }
+      }
+    // Sizes and places a mesh can hold (after the checks above, whose
+    // messages say more where they apply).
+    if (shape == Shape::rectangle || shape == Shape::die)
+      for (unsigned int d = 0; d < dim; ++d)
+        check_size(upper_corner[d] - lower_corner[d],
+                   std::max(std::abs(lower_corner[d]), std::abs(upper_corner[d])),
+                   context + " > Upper corner",
+                   prm.get("Lower corner") + "' to '" + prm.get("Upper corner"));
+    else
+      {
+        double place = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          place = std::max(place, std::abs(center[d]));
+        if (!(place <= max_length))
+          throw InputError(context + " > Center",
+                           "'" + prm.get("Center") +
+                             "': a mesh's coordinates must lie within +-1e30");
+        check_size(radius, place, context + " > Radius", prm.get("Radius"));
+        if (shape == Shape::quarter_cylinder || shape == Shape::half_cylinder)
+          check_size(length, place, context + " > Length", prm.get("Length"));
       }
   }
 

@@ -265,8 +265,14 @@ namespace Signorini
     if (m == Method::newton && contact)
       throw InputError("Solver > Method",
                        "the scene declares contact (Contact > Type = " + p.contact.type() +
-                         "), which Method = newton cannot handle: use "
-                         "newton-penalty");
+                         "), which Method = newton cannot handle: use " +
+                         (p.contact.node_wise_constraints() ?
+                            std::string("interior-point (the default scene's "
+                                        "solver; or newton-penalty, or ipopt "
+                                        "on one rank)") :
+                            std::string("newton-penalty (or ipopt on one "
+                                        "rank)")) +
+                         ", or leave Method out (automatic)");
     if (m == Method::newton_penalty && !contact)
       throw InputError("Solver > Method",
                        "newton-penalty needs contact (Contact > Type); the "
@@ -330,6 +336,8 @@ namespace Signorini
           return std::make_unique<InteriorPointStep<dim>>(parameters, scene,
                                                           problem, timer,
                                                           progress);
+        case Method::automatic: // resolved by Parameters::Scene
+          break;
       }
     return nullptr;
   }

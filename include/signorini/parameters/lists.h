@@ -19,4 +19,16 @@ namespace Signorini
            const std::string        &key,
            const unsigned int        n,
            const std::string        &context);
+
+  /**
+   * Throws InputError "@p context > @p key: must be set ..." unless the
+   * scene states the entry @p key of the current subsection, whose path is
+   * @p context ("Body 1 > Material"). For entries declared with
+   * has_to_be_set = true: a default that no scene should rely on (a
+   * material's modulus) is then never taken silently.
+   */
+  void
+  require_set(const dealii::ParameterHandler &prm,
+              const std::string              &key,
+              const std::string              &context);
 } // namespace Signorini

@@ -116,7 +116,9 @@ namespace Signorini
         newton,         // Newton on E (no contact)
         newton_penalty, // penalty continuation, stages minimised by Newton
         ipopt,          // Ipopt: constraints, or penalty stages (two bodies)
-        interior_point  // our primal-dual interior point (rigid foundation)
+        interior_point, // our primal-dual interior point (rigid foundation)
+        automatic       // the entry's default; Scene::parse_parameters
+                        // replaces it by the solver the scene calls for
       };
 
       Method                       method = Method::newton;
