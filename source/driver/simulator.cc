@@ -1,5 +1,6 @@
 #include <signorini/archive_io.h>
 #include <signorini/driver/checkpoint.h>
+#include <signorini/driver/mpi_environment.h>
 #include <signorini/driver/simulator.h>
 #include <signorini/first_error.h>
 #include <signorini/input_error.h>
@@ -38,6 +39,7 @@ namespace Signorini
     report.parameter_file   = parameter_file;
     report.dimension        = dim;
     report.n_ranks          = Utilities::MPI::n_mpi_processes(comm);
+    report.mpi_settings     = MpiEnvironment::applied();
     report.scene            = parameters.global.scene;
     report.output_directory = parameters.global.output_directory;
     report.degree           = parameters.discretization.degree;

@@ -1,4 +1,3 @@
-#include <signorini/driver/mpi_environment.h>
 #include <signorini/interruption.h>
 #include <signorini/output/atomic_file.h>
 #include <signorini/output/summary.h>
@@ -74,8 +73,7 @@ namespace Signorini
       j["threads per rank"] = MultithreadInfo::n_threads();
       j["blas"]             = loaded_library("libblas");
       j["lapack"]           = loaded_library("liblapack");
-      // Open MPI settings the program made before MPI_Init ("" if none).
-      j["mpi settings"]     = MpiEnvironment::applied();
+      j["mpi settings"]     = report.mpi_settings;
       Json materials_json = Json::array();
       for (const auto &m : report.materials)
         materials_json.push_back(m);

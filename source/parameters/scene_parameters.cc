@@ -3,7 +3,7 @@
 #include <signorini/material/interface.h>
 #include <signorini/parameters/lists.h>
 #include <signorini/parameters/scene_parameters.h>
-#include <signorini/driver/study.h>
+#include <signorini/parameters/study_parameters.h>
 
 #include <algorithm>
 #include <cmath>

@@ -24,9 +24,7 @@ namespace Signorini
    */
   namespace Study
   {
-    /// The "Study" subsection (ignored by an ordinary run).
-    void
-    declare_parameters(ParameterHandler &prm);
+    // Its parameters: parameters/study_parameters.h.
 
     /// Run the study of @p file (parsed into @p prm); returns the exit
     /// code (0: every run converged, 3: some failed, recorded as such).

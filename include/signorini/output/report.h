@@ -1,7 +1,7 @@
 #pragma once
 
+#include <signorini/output/penalty_stage.h>
 #include <signorini/output/postprocess.h>
-#include <signorini/solvers/penalty_continuation.h>
 
 #include <deal.II/base/tensor.h>
 
@@ -93,6 +93,8 @@ namespace Signorini
     unsigned long long       n_cells   = 0;
     unsigned long long       n_dofs    = 0;
     unsigned int             n_ranks   = 1;
+    /// Open MPI settings the program made before MPI_Init ("" if none).
+    std::string              mpi_settings;
     double                   h_min     = 0.;
     double                   h_max     = 0.;
     std::vector<std::string> materials;

@@ -3,6 +3,7 @@
 #include <signorini/solvers/continuation_parameters.h>
 
 #include <signorini/contact/penalty.h>
+#include <signorini/output/penalty_stage.h>
 #include <signorini/problem/energy_functional.h>
 #include <signorini/solvers/newton.h>
 
@@ -15,23 +16,6 @@
 
 namespace Signorini
 {
-
-  struct PenaltyStage
-  {
-    double       mu                = 0.;
-    unsigned int iterations        = 0; // of the stage's minimiser (Newton or Ipopt)
-    double       penetration_ratio = 0.;
-    // false: the stage's solver failed and the stage was tried again
-    // from the previous stage's solution with a smaller jump in mu.
-    bool converged = true;
-
-    template <class Archive>
-    void
-    serialize(Archive &ar, const unsigned int)
-    {
-      ar &mu &iterations &penetration_ratio &converged;
-    }
-  };
 
   struct ContinuationResult
   {
