@@ -392,6 +392,83 @@ namespace Signorini
         std::cerr << message << std::endl;
       return code;
     }
+
+    /// The result of a run on the screen: its quantities with their
+    /// references and estimated errors, the target accuracy, the summary.
+    void
+    print_result(const Report &report)
+    {
+      std::cout << "\nResult (" << report.status << ", "
+                << report.steps.size() << " load steps, "
+                << report.iterations
+                << (report.iteration_name == "ipopt"          ? " Ipopt" :
+                    report.iteration_name == "interior_point" ? " interior point" :
+                                                                " Newton")
+                << " iterations):\n";
+      for (const auto &q : report.quantities)
+        {
+          std::cout << "  " << q.name << " = " << std::setprecision(8)
+                    << q.value;
+          if (q.has_reference)
+            std::cout << "   reference " << q.reference
+                      << "   relative error " << std::setprecision(3)
+                      << q.relative_error()
+                      << (q.within_tolerance() ? "" : "   OUTSIDE TOLERANCE");
+          if (q.has_estimate)
+            {
+              std::cout << "   estimated error " << std::setprecision(2)
+                        << q.estimated_error;
+              if (q.estimated_error > 0.)
+                std::cout << " (relative " << q.estimated_relative_error()
+                          << ", order " << q.observed_order << ")";
+            }
+          std::cout << "\n";
+        }
+      if (report.target_accuracy > 0.)
+        {
+          std::cout << "Target accuracy " << report.target_accuracy
+                    << (report.target_met ? " met" : " NOT MET") << " after "
+                    << report.last_cycle()
+                    << " refinement cycles";
+          if (!report.target_unmet.empty())
+            {
+              std::cout << "; above it:";
+              for (const auto &name : report.target_unmet)
+                std::cout << " " << name;
+            }
+          std::cout << "\n";
+        }
+      std::cout << "Summary: " << report.output_directory << "/summary.json"
+                << std::endl;
+    }
+
+    /// signorini --check FILE...: each file on its own, so that every bad
+    /// one is reported; the worst exit code.
+    int
+    check_files(const std::vector<std::string> &args, const bool root)
+    {
+      int worst = success;
+      for (const std::string &file : args)
+        {
+          const int code = guarded(file, root, [&]() {
+            ParameterHandler scene;
+            declare_parameters(scene);
+            read_parameter_file(scene, file);
+            const unsigned int dim = scene.get_integer("Dimension");
+            if (dim == 2)
+              check_scene<2>(scene, file);
+            else
+              check_scene<3>(scene, file);
+            if (root)
+              std::cout << file << ": the input is valid (" << dim << "D)"
+                        << std::endl;
+            return int(success);
+          });
+          if (worst != internal_error && code != success)
+            worst = code;
+        }
+      return worst;
+    }
   } // namespace
 
   int
@@ -449,30 +526,7 @@ namespace Signorini
       }
 
     if (check)
-      {
-        // Each file on its own: every bad one is reported.
-        int worst = success;
-        for (const std::string &file : args)
-          {
-            const int code = guarded(file, root, [&]() {
-              ParameterHandler scene;
-              declare_parameters(scene);
-              read_parameter_file(scene, file);
-              const unsigned int dim = scene.get_integer("Dimension");
-              if (dim == 2)
-                check_scene<2>(scene, file);
-              else
-                check_scene<3>(scene, file);
-              if (root)
-                std::cout << file << ": the input is valid (" << dim << "D)"
-                          << std::endl;
-              return int(success);
-            });
-            if (worst != internal_error && code != success)
-              worst = code;
-          }
-        return worst;
-      }
+      return check_files(args, root);
 
     // The report on the screen and the exit code of a run.
     auto finish = [&](const Report &report) -> int {
@@ -487,50 +541,7 @@ namespace Signorini
       in_tolerance &= !target_missed;
 
       if (root && !quiet)
-        {
-          std::cout << "\nResult (" << report.status << ", "
-                    << report.steps.size() << " load steps, "
-                    << report.iterations
-                    << (report.iteration_name == "ipopt"          ? " Ipopt" :
-                        report.iteration_name == "interior_point" ? " interior point" :
-                                                                    " Newton")
-                    << " iterations):\n";
-          for (const auto &q : report.quantities)
-            {
-              std::cout << "  " << q.name << " = " << std::setprecision(8)
-                        << q.value;
-              if (q.has_reference)
-                std::cout << "   reference " << q.reference
-                          << "   relative error " << std::setprecision(3)
-                          << q.relative_error()
-                          << (q.within_tolerance() ? "" : "   OUTSIDE TOLERANCE");
-              if (q.has_estimate)
-                {
-                  std::cout << "   estimated error " << std::setprecision(2)
-                            << q.estimated_error;
-                  if (q.estimated_error > 0.)
-                    std::cout << " (relative " << q.estimated_relative_error()
-                              << ", order " << q.observed_order << ")";
-                }
-              std::cout << "\n";
-            }
-          if (report.target_accuracy > 0.)
-            {
-              std::cout << "Target accuracy " << report.target_accuracy
-                        << (report.target_met ? " met" : " NOT MET") << " after "
-                        << report.last_cycle()
-                        << " refinement cycles";
-              if (!report.target_unmet.empty())
-                {
-                  std::cout << "; above it:";
-                  for (const auto &name : report.target_unmet)
-                    std::cout << " " << name;
-                }
-              std::cout << "\n";
-            }
-          std::cout << "Summary: " << report.output_directory << "/summary.json"
-                    << std::endl;
-        }
+        print_result(report);
       if (root && on_report)
         on_report(report);
 

@@ -164,6 +164,61 @@ namespace Signorini
                        "must be >= Minimum growth");
   }
 
+  namespace
+  {
+    /// The largest jump in mu allowed after a converged stage reached by
+    /// a jump @p jump in @p iterations Newton iterations: smaller if the
+    /// stage took more than the target, larger if it took at most half.
+    double
+    next_max_jump(const ContinuationParameters &parameters,
+                  const double                  max_jump,
+                  const double                  jump,
+                  const double                  iterations)
+    {
+      const double target = parameters.stage_iteration_target;
+      if (iterations > target)
+        return std::min(max_jump,
+                        std::max(std::min(parameters.min_growth, max_jump),
+                                 std::pow(jump, target / iterations)));
+      if (2. * iterations <= target)
+        return std::min(parameters.max_growth, max_jump * max_jump);
+      return max_jump;
+    }
+
+    /// The next stage's penalty: the growth that the penetration ratio
+    /// predicts for the target (penetration falls like mu^(-1/2)), within
+    /// [Minimum growth, max_jump] and below the cap. After a failed stage
+    /// max_jump may lie below Minimum growth: the failure wins.
+    double
+    next_penalty(const ContinuationParameters &parameters,
+                 const double                  mu,
+                 const double                  mu_cap,
+                 const double                  max_jump,
+                 const double                  penetration_ratio)
+    {
+      const double predicted =
+        std::pow(penetration_ratio /
+                   (parameters.target_fraction * parameters.penetration_tolerance),
+                 2.);
+      return std::min(mu_cap,
+                      mu * std::max(std::min(parameters.min_growth, max_jump),
+                                    std::min(max_jump, predicted)));
+    }
+
+    /// Why the continuation stopped at the failed stage at @p mu.
+    std::string
+    stage_failure(const ContinuationResult &result, const double mu)
+    {
+      std::ostringstream msg;
+      msg << "penalty stage " << result.stages.size() << " (mu = " << mu
+          << "): " << result.last.reason;
+      if (result.retries > 0)
+        msg << " (after " << result.retries
+            << " retries with smaller jumps in mu)";
+      return msg.str();
+    }
+  } // namespace
+
   template <int dim>
   ContinuationResult
   penalty_continuation(const ContinuationParameters    &parameters,
@@ -286,13 +341,7 @@ namespace Signorini
                          << max_jump << " in mu" << std::endl;
                 continue;
               }
-            std::ostringstream msg;
-            msg << "penalty stage " << result.stages.size() << " (mu = " << mu
-                << "): " << result.last.reason;
-            if (result.retries > 0)
-              msg << " (after " << result.retries
-                  << " retries with smaller jumps in mu)";
-            result.reason = msg.str();
+            result.reason = stage_failure(result, mu);
             return result;
           }
         auto summary = measure_stage();
@@ -326,18 +375,8 @@ namespace Signorini
         // carries the load increment: it does not say how hard a jump in
         // mu is.)
         if (n_converged >= 1)
-          {
-            const double jump = mu / last_mu;
-            const double n    = result.last.iterations;
-            const double target = parameters.stage_iteration_target;
-            if (n > target)
-              max_jump = std::min(
-                max_jump,
-                std::max(std::min(parameters.min_growth, max_jump),
-                         std::pow(jump, target / n)));
-            else if (2. * n <= target)
-              max_jump = std::min(parameters.max_growth, max_jump * max_jump);
-          }
+          max_jump = next_max_jump(parameters, max_jump, mu / last_mu,
+                                   result.last.iterations);
         before_last   = last;
         before_last_r = last_r;
         last          = u;
@@ -363,15 +402,8 @@ namespace Signorini
                      << "; the step is accepted" << std::endl;
             return result;
           }
-        const double predicted =
-          std::pow(summary.max_penetration_ratio /
-                     (parameters.target_fraction * parameters.penetration_tolerance),
-                   2.);
-        // After a failed stage max_jump may lie below Minimum growth:
-        // the failure wins.
-        mu = std::min(mu_cap,
-                      mu * std::max(std::min(parameters.min_growth, max_jump),
-                                    std::min(max_jump, predicted)));
+        mu = next_penalty(parameters, mu, mu_cap, max_jump,
+                          summary.max_penetration_ratio);
       }
     result.converged = true;
     progress << "  warning: the penetration tolerance was not met in "
