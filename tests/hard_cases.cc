@@ -15,9 +15,18 @@
 //   (Ipopt on a rigid foundation: within 1e-4 h, its constraint tolerance
 //   being absolute; the interior point method: within 1e-8 h);
 // - every quantity with a reference is within its tolerance;
-// - the iterations (Newton, Ipopt or interior point) are within [1/1.5, 1.5] x those
-//   measured when the test was written (printed to stderr), so that a
-//   change that makes a hard case much harder shows. The two-body cases
+// - the iterations (Newton, Ipopt or interior point) are at most 1.5 x the
+//   most measured across OpenBLAS's kernels (printed to stderr), so that a
+//   change that makes a hard case much harder shows. Measured 2026-11-28
+//   under OPENBLAS_CORETYPE = Nehalem, Sandybridge, Haswell, Zen, SkylakeX
+//   and Cooperlake (scripts/check_kernels.sh): every Newton and interior
+//   point count is the same under all six; Ipopt's on the two-body
+//   penalty stages is not, its path changing with the last bits of BLAS
+//   (mesh mismatch 30-61, stiff on soft block 28-46, grazing ironing
+//   535-611, full ironing 1174-1210). A pinned count within [1/1.5, 1.5]
+//   failed there on another CPU (issue 52); a lower bound guarded nothing
+//   that the convergence checks do not. Before, these were the counts of
+//   one machine at a time: the two-body cases
 //   were measured again with the 'partition' indicator (the default since
 //   2026-11-24: mesh mismatch 34 -> 28 and 71 -> 40, full ironing 1253 ->
 //   1047 and 1500 -> 989), and again with the transport predictor of the
@@ -55,7 +64,7 @@ namespace
     std::string  scene;
     std::string  method;
     std::string  edits;      // the coarse size
-    double       iterations; // measured when the test was written
+    double       iterations; // the most measured across BLAS kernels
     std::string  label = "";  // told apart from the same scene and method
   };
 
@@ -85,30 +94,30 @@ main()
   std::vector<Case> cases = {
     {"ssnv187_nu4999", "newton", "", 7},
     {"ssnv187_20x_load", "newton", "", 88},
-    {"ssnv187_corner", "newton-penalty", "", 22},
+    {"ssnv187_corner", "newton-penalty", "", 21},
     {"ssnv187_corner", "ipopt", "", 10},
     {"ssnv187_corner", "interior-point", "", 9},
     {"ssnv187_corner", "interior-point", amf, 9, "_amf"},
-    {"hertz_nu4999", "newton-penalty", local3, 27},
+    {"hertz_nu4999", "newton-penalty", local3, 21},
     {"hertz_nu4999", "ipopt", local3, 17},
     {"hertz_nu4999", "interior-point", local3, 8},
-    {"hertz_tight_penetration", "newton-penalty", local3, 37},
+    {"hertz_tight_penetration", "newton-penalty", local3, 27},
     {"hertz_tight_penetration", "ipopt", local3, 17},
     {"hertz_tight_penetration", "interior-point", local3, 8},
-    {"hertz_initial_gap", "newton-penalty", local3, 31},
+    {"hertz_initial_gap", "newton-penalty", local3, 24},
     {"hertz_initial_gap", "ipopt", local3, 17},
     {"hertz_initial_gap", "interior-point", local3, 9},
-    {"hertz_initial_penetration", "newton-penalty", local3, 31},
+    {"hertz_initial_penetration", "newton-penalty", local3, 24},
     {"hertz_initial_penetration", "ipopt", local3, 19},
     {"hertz_initial_penetration", "interior-point", local3, 10},
     {"stiff_on_soft_block", "newton-penalty", stiff, 26},
-    {"stiff_on_soft_block", "ipopt", stiff, 47},
-    {"mesh_mismatch", "newton-penalty", mismatch, 28},
-    {"mesh_mismatch", "ipopt", mismatch, 40},
+    {"stiff_on_soft_block", "ipopt", stiff, 46},
+    {"mesh_mismatch", "newton-penalty", mismatch, 26},
+    {"mesh_mismatch", "ipopt", mismatch, 61},
     {"ironing_grazing", "newton-penalty", ironing, 33},
-    {"ironing_grazing", "ipopt", ironing, 522},
-    {"ironing_full", "newton-penalty", ironing, 244},
-    {"ironing_full", "ipopt", ironing, 989},
+    {"ironing_grazing", "ipopt", ironing, 611},
+    {"ironing_full", "newton-penalty", ironing, 213},
+    {"ironing_full", "ipopt", ironing, 1210},
   };
 
   std::ofstream     out("output");
@@ -178,9 +187,8 @@ main()
         iterations = first_number(numbers, "interior_point iterations");
       if (std::isnan(iterations))
         iterations = first_number(numbers, "newton iterations");
-      out << "  iterations within 1.5x of the measured " << c.iterations << ": "
-          << verdict(iterations <= 1.5 * c.iterations &&
-                     iterations >= c.iterations / 1.5)
+      out << "  iterations at most 1.5x the most measured across BLAS kernels ("
+          << c.iterations << "): " << verdict(iterations <= 1.5 * c.iterations)
           << "\n";
       std::cerr << name << ": exit " << status << ", "
                 << first_number(numbers, "dofs") << " DoFs, "
