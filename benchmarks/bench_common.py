@@ -1,8 +1,11 @@
-"""Shared helpers of the benchmark scripts (scaling.py, effects.py).
+"""Shared helpers of the benchmark scripts.
 
 Writes variant parameter files (an 'include' of a committed scene followed by
 'set' overrides), runs the program (optionally under mpirun), reads the run's
-summary.json and describes the machine. Python 3 standard library only.
+summary.json and describes the machine. Paths given on a script's command
+line are the caller's: absolute_paths() resolves them against the folder the
+script was started from, before any run changes its working directory.
+Python 3 standard library only.
 """
 
 import argparse
@@ -27,6 +30,45 @@ PRM = os.path.join(ROOT, "prm")
 # "contact" only exists in programs that time the contact evaluation apart.
 PHASES = ["setup", "assembly", "contact", "linear solve", "line search",
           "sparsity pattern", "postprocessing", "output", "total"]
+
+
+# A benchmark whose peer program is not installed exits with this status
+# after saying what is missing (the automake convention for a skipped test).
+EXIT_SKIPPED = 77
+
+
+def absolute(path):
+    """@p path resolved against the caller's working directory (None and ''
+    stay as they are). A bare program name (no '/') is left to PATH."""
+    if not path:
+        return path
+    return os.path.abspath(os.path.expanduser(path))
+
+
+def absolute_paths(args, *names):
+    """Resolve the argparse attributes @p names of @p args (paths the
+    caller gave: binary, scene, output folders) against the caller's
+    folder, so that runs started in another folder (mpirun in a run's
+    work folder) still find them."""
+    for name in names:
+        value = getattr(args, name, None)
+        if isinstance(value, str):
+            setattr(args, name, absolute(value))
+    return args
+
+
+def require_binary(script, binary):
+    """Exit with a message naming @p binary if it is not an executable."""
+    if not os.access(binary, os.X_OK) or os.path.isdir(binary):
+        sys.exit(f"{script}: no executable {binary} (build first: bash "
+                 "scripts/setup.sh, or pass --binary)")
+
+
+def skip(script, what):
+    """Say that @p script cannot run because @p what is missing, and exit
+    with EXIT_SKIPPED."""
+    print(f"{script}: skipped: {what}", file=sys.stderr)
+    sys.exit(EXIT_SKIPPED)
 
 
 # --------------------------------------------------------------------------
@@ -227,8 +269,9 @@ def _run_process(cmd, env, timeout, cwd):
 def run_timed(binary, prm, cwd, ranks=1, env=None):
     """Run @p binary on @p prm in @p cwd (under mpirun on @p ranks > 1,
     with OpenMPI allowed to run as root), with @p env added to this
-    process's environment; return (wall seconds, CompletedProcess)."""
-    cmd = [binary, prm]
+    process's environment; return (wall seconds, CompletedProcess).
+    A relative @p binary or @p prm is the caller's, not @p cwd's."""
+    cmd = [binary if os.sep not in binary else absolute(binary), absolute(prm)]
     full_env = dict(os.environ, **(env or {}))
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd

@@ -16,6 +16,8 @@ A variant is SOLVER@RANKS or SOLVER@RANKSxTHREADS (threads per rank,
 default 1, through DEAL_II_NUM_THREADS); SOLVER is a value of `Solver >
 Linear solver > Direct solver`. --method sets `Solver > Method` (default interior-point).
 --markdown FILE puts the table between the DIRECT-SOLVERS markers there.
+--quick: one run of each of PETSc_Mumps@1 and Amesos_Klu@2 at size 3:4
+(checks the script in a few seconds, says nothing).
 """
 import argparse
 import os
@@ -69,9 +71,15 @@ def main():
                         help="largest relative difference of a and p0 "
                         "from the first variant's")
     parser.add_argument("--markdown", default=None)
-    args = parser.parse_args()
+    parser.add_argument("--quick", action="store_true")
+    args = bench_common.absolute_paths(parser.parse_args(), "binary", "scene",
+                                       "markdown")
+    if args.quick:
+        args.sizes, args.runs = "3:4", 1
+        args.variants = "PETSc_Mumps@1,Amesos_Klu@2"
 
-    binary = os.path.abspath(args.binary)
+    binary = args.binary
+    bench_common.require_binary("direct_solvers.py", binary)
     variants = []
     for v in args.variants.split(","):
         solver, _, layout = v.partition("@")
@@ -80,7 +88,7 @@ def main():
     sizes = [tuple(int(x) for x in s.split(":")) for s in args.sizes.split(",")]
     info = bench_common.machine_info()
     bench_common.warn_if_busy(info)
-    lines = [bench_common.stamp(info, sys.argv, binary), "",
+    lines = [bench_common.stamp(info, sys.argv, binary, args.quick), "",
              f"Scene `{os.path.relpath(args.scene, ROOT)}`, `Solver > Method "
              f"= {args.method}`, threads per rank through `DEAL_II_NUM_THREADS`,"
              f" {args.runs} alternated runs per variant, whole process; "

@@ -72,7 +72,7 @@ def parse_args(argv):
     p.add_argument("--timeout", type=float, default=None)
     p.add_argument("--reuse", action="store_true")
     p.add_argument("--no-run", action="store_true")
-    args = p.parse_args(argv)
+    args = bc.absolute_paths(p.parse_args(argv), "binary", "out", "markdown")
     args.parts = [x.strip() for x in args.parts.split(",") if x.strip()]
     for part in args.parts:
         if part not in ("overhead", "rigid", "two-bodies"):

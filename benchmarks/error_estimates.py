@@ -75,7 +75,10 @@ def main():
     ap.add_argument("--from", dest="reuse")
     ap.add_argument("--work", default=os.path.join(bc.ROOT, "output", "error_estimates"))
     ap.add_argument("--markdown")
-    args = ap.parse_args()
+    args = bc.absolute_paths(ap.parse_args(), "binary", "reuse", "work",
+                             "markdown")
+    if not args.reuse:
+        bc.require_binary("error_estimates.py", args.binary)
     info = bc.machine_info()
     work = args.reuse or args.work
     os.makedirs(work, exist_ok=True)
@@ -91,7 +94,7 @@ def main():
             prm = os.path.join(work, os.path.splitext(scene)[0] + ".prm")
             with open(prm, "w") as f:
                 f.write(bc.variant_text(os.path.join(bc.PRM, scene), folder, o))
-            seconds, proc = bc.run_timed(os.path.abspath(args.binary), prm, work)
+            seconds, proc = bc.run_timed(args.binary, prm, work)
             print(f"{title}: {seconds:.1f} s, exit {proc.returncode}", file=sys.stderr)
         summary = bc.read_json(os.path.join(folder, "summary.json"))
         if not summary:

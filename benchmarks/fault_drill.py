@@ -70,7 +70,13 @@ def main():
     parser.add_argument("--seed", type=int, default=2026)
     parser.add_argument("--output", default=os.path.join(ROOT, "build", "output", "fault_drill"))
     args = parser.parse_args()
+    # The caller's paths, whatever folder the runs start in.
+    args.build, args.scene, args.output = (
+        os.path.abspath(p) for p in (args.build, args.scene, args.output))
     exe = os.path.join(args.build, "signorini")
+    if not os.access(exe, os.X_OK):
+        sys.exit(f"fault_drill.py: no executable {exe} (build first: bash "
+                 "scripts/setup.sh, or pass --build)")
     rng = random.Random(args.seed)
 
     reference = os.path.join(args.output, "reference")

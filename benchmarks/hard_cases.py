@@ -9,11 +9,15 @@ prints it.
 
     python3 benchmarks/hard_cases.py [--build build] [--only NAME ...]
                                      [--timeout SECONDS] [--no-doc]
+                                     [--out DIR] [--quick]
 
 The scenes include committed scenes by a path relative to prm/hard/, which
 signorini resolves against the including file, so they run from any folder;
 the runs start in prm/hard/ and their output goes to
-build/output/hard/CASE_METHOD/.
+build/output/hard/CASE_METHOD/ (--out DIR: DIR/CASE_METHOD/). --quick runs
+the corner case with every solver and the stiff die on the soft block with
+the penalty path (6 small runs, a few seconds: checks the script, and
+leaves doc/robustness.md alone, as --only does).
 """
 
 import argparse
@@ -51,6 +55,10 @@ CASES = [
     ("ironing_grazing", ["newton-penalty", "ipopt", "newton-penalty + CG"]),
     ("ironing_full", ["newton-penalty", "ipopt", "newton-penalty + CG"]),
 ]
+
+
+# --quick: one small rigid case with every solver, one two-body case.
+QUICK = ["ssnv187_corner", "stiff_on_soft_block"]
 
 
 def run_case(executable, name, solver, out_root, timeout):
@@ -132,9 +140,13 @@ def main():
     parser.add_argument("--timeout", type=float, default=3600.)
     parser.add_argument("--no-doc", action="store_true",
                         help="do not rewrite doc/robustness.md")
+    parser.add_argument("--out", help="folder of the runs (default "
+                        "BUILD/output/hard)")
+    parser.add_argument("--quick", action="store_true")
     args = parser.parse_args()
     executable = os.path.join(os.path.abspath(args.build), "signorini")
-    out_root = os.path.join(os.path.abspath(args.build), "output", "hard")
+    out_root = os.path.abspath(args.out) if args.out else \
+        os.path.join(os.path.abspath(args.build), "output", "hard")
     if not os.access(executable, os.X_OK):
         sys.exit(f"hard_cases.py: no executable {executable}: build first "
                  "(bash scripts/setup.sh)")
@@ -142,6 +154,10 @@ def main():
     for name, methods in CASES:
         if args.only and name not in args.only:
             continue
+        if args.quick:
+            if name not in QUICK:
+                continue
+            methods = methods if name == QUICK[0] else methods[:1]
         for method in methods:
             row = run_case(executable, name, method, out_root, args.timeout)
             rows.append(row)
@@ -151,7 +167,7 @@ def main():
     print(text)
     n_ok = sum(r.get("status") == "converged" for r in rows)
     print(f"{n_ok} converged, {len(rows) - n_ok} not converged")
-    if not args.no_doc and not args.only:
+    if not args.no_doc and not args.only and not args.quick:
         doc = os.path.join(ROOT, "doc", "robustness.md")
         with open(doc) as f:
             content = f.read()

@@ -24,7 +24,9 @@ Usage:
   scene's 0.2; 10:3:7:0.25 gives 202 692 DoFs against the peer's 2.0e5).
 --fields: our runs write their VTU fields as a user's run does (default:
   Output > Format = none, as the peer writes only a profile CSV).
-Needs FreeFem++ (Debian package freefem++). Python 3 standard library only.
+Needs FreeFem++ (Debian package freefem++) and the peer's folder; without
+either it says which is missing and exits with status 77 (skipped).
+Python 3 standard library only.
 """
 
 import os
@@ -92,10 +94,17 @@ def main():
     parser.add_argument("--fields", action="store_true")
     parser.add_argument("--csv", default=None,
                         help="also write the table's rows here")
-    args = parser.parse_args()
+    args = bench_common.absolute_paths(parser.parse_args(), "binary", "peer",
+                                       "csv")
     if shutil.which("FreeFem++") is None:
-        sys.exit("FreeFem++ not found: apt-get install freefem++ libfreefem++")
-    binary = os.path.abspath(args.binary)
+        bench_common.skip("peer_freefem.py", "the peer needs FreeFem++, which "
+                          "is not installed (apt-get install freefem++ "
+                          "libfreefem++)")
+    if not os.path.isfile(os.path.join(args.peer, "hertz_rigid.edp")):
+        bench_common.skip("peer_freefem.py", f"no peer model in {args.peer} "
+                          "(hertz_rigid.edp; pass --peer DIR)")
+    binary = args.binary
+    bench_common.require_binary("peer_freefem.py", binary)
     methods = [m for m in args.methods.split(",") if m]
     sizes = []
     for s in args.sizes.split(","):

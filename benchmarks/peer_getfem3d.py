@@ -28,7 +28,9 @@ Usage:
   python3 benchmarks/peer_getfem3d.py [--binary build/signorini]
       [--peer ../shared/peers/getfem3d] [--runs 3] [--levels 1,2]
       [--sizes 2:4:0.06,2:5:0.06,2:6] [--ranks 1,2] [--accuracy 0.005]
-Needs apt-get install python3-getfem python3-scipy gmsh.
+Needs apt-get install python3-getfem python3-scipy gmsh, and the peer's
+folder; without either it says which is missing and exits with status 77
+(skipped).
 """
 
 import csv
@@ -101,15 +103,21 @@ def main():
                         help="comma separated MPI rank counts for our runs")
     parser.add_argument("--accuracy", type=float, default=0.005)
     parser.add_argument("--converged", type=float, default=OURS_CONVERGED)
-    args = parser.parse_args()
+    args = bench_common.absolute_paths(parser.parse_args(), "binary", "peer")
     try:
         subprocess.run([PYTHON, "-c", "import getfem"], check=True,
                        capture_output=True)
     except (OSError, subprocess.CalledProcessError):
-        sys.exit("GetFEM not found: apt-get install python3-getfem "
-                 "python3-scipy gmsh")
-    binary = os.path.abspath(args.binary)
-    peer_dir = os.path.abspath(args.peer)
+        bench_common.skip("peer_getfem3d.py", "the peer needs GetFEM's Python "
+                          f"module, which {PYTHON} cannot import (apt-get "
+                          "install python3-getfem python3-scipy gmsh)")
+    binary = args.binary
+    peer_dir = args.peer
+    for needed in ("hertz3d.py", "results.csv"):
+        if not os.path.isfile(os.path.join(peer_dir, needed)):
+            bench_common.skip("peer_getfem3d.py", f"no peer model in {peer_dir} "
+                              f"({needed}; pass --peer DIR)")
+    bench_common.require_binary("peer_getfem3d.py", binary)
     p0_peer, peer_finest = peer_converged(peer_dir)
     levels = [int(x) for x in args.levels.split(",") if x]
     sizes = [x for x in args.sizes.split(",") if x]

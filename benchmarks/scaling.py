@@ -134,7 +134,7 @@ def parse_args(argv):
                    help="only read existing run folders (implies --reuse)")
     p.add_argument("--dry-run", action="store_true",
                    help="print the planned runs and exit")
-    args = p.parse_args(argv)
+    args = bc.absolute_paths(p.parse_args(argv), "binary", "out", "markdown")
     args.series = [s.strip() for s in args.series.split(",") if s.strip()]
     for s in args.series:
         if s not in SERIES:

@@ -31,9 +31,14 @@ def run(executable, levels, method, out_root):
                 f"subsection Mesh\n  set Local refinements = {levels}\nend\n"
                 f"subsection Solver\n  set Method = {method}\nend\n"
                 "subsection Output\n  set Format = none\n  set Verbosity = quiet\nend\n")
-    subprocess.run([executable, prm], check=False, stdout=subprocess.DEVNULL)
-    with open(os.path.join(folder, "summary.json")) as f:
-        return json.load(f)
+    code = subprocess.run([executable, prm], check=False,
+                          stdout=subprocess.DEVNULL).returncode
+    try:
+        with open(os.path.join(folder, "summary.json")) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        sys.exit(f"solver_comparison.py: {method} at {levels} local "
+                 f"refinements wrote no summary.json (exit {code}): {prm}")
 
 
 def main():
@@ -43,7 +48,12 @@ def main():
     parser.add_argument("--levels", type=int, nargs="+", default=[3, 4, 5])
     parser.add_argument("--out", default=os.path.join("output", "solver_comparison"))
     args = parser.parse_args()
+    # The caller's paths, whatever folder the runs start in.
+    args.build, args.out = os.path.abspath(args.build), os.path.abspath(args.out)
     executable = os.path.join(args.build, "signorini")
+    if not os.access(executable, os.X_OK):
+        sys.exit(f"solver_comparison.py: no executable {executable} (build "
+                 "first: bash scripts/setup.sh, or pass --build)")
 
     rows = []
     for level in args.levels:

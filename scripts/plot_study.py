@@ -20,7 +20,18 @@ import math
 import os
 import sys
 
-import matplotlib
+try:
+    import matplotlib
+except ImportError:
+    # Debian's python3-matplotlib (scripts/setup.sh) is in Debian's
+    # interpreter, which need not be the python3 first on PATH.
+    DEBIAN = "/usr/bin/python3"
+    if os.access(DEBIAN, os.X_OK) and not os.environ.get("PLOT_STUDY_DEBIAN") \
+            and os.path.realpath(sys.executable) != os.path.realpath(DEBIAN):
+        os.environ["PLOT_STUDY_DEBIAN"] = "1"
+        os.execv(DEBIAN, [DEBIAN] + sys.argv)
+    sys.exit("plot_study.py: needs matplotlib: apt-get install "
+             "python3-matplotlib (for /usr/bin/python3)")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
