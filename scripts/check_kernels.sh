@@ -44,7 +44,7 @@ fi
 # A deal.II-style test runs only when its output is older than its
 # executable or input: the outputs of the last run go, so that each
 # kernel's run runs every selected test again.
-forget_outputs() { find build/tests -path '*.release/output' -delete 2>/dev/null || true; }
+forget_outputs() { find build/tests -path '*.release/*' -name output -type f -delete 2>/dev/null || true; }
 
 passed=0 failed=0
 run() { # label, then the environment to run ctest in

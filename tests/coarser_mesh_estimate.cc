@@ -55,10 +55,11 @@ namespace
         const double       p0_converged,
         const double       a_converged,
         const double       tolerance,
-        const std::string &launcher)
+        const std::string &launcher,
+        const std::string &edits = "")
   {
-    const int plain = RunOutput::run_scene(name + "_plain", scene, "", launcher);
-    const int run   = RunOutput::run_scene(name, scene, coarser, launcher);
+    const int plain = RunOutput::run_scene(name + "_plain", scene, edits, launcher);
+    const int run   = RunOutput::run_scene(name, scene, edits + coarser, launcher);
     out << name << ": both runs exit 0: " << verdict(plain == 0 && run == 0) << "\n";
     out << name << ": the plain run's mesh and answer: "
         << verdict(dofs(name) == dofs(name + "_plain") &&
@@ -99,8 +100,14 @@ main()
 {
   std::ofstream out("output");
   check(out, "rigid_2d", "default.prm", 10.858036, 0.0986424, 1e-6, "");
+  // The nodal form, which the scene had when the converged p0 was
+  // measured. (With the scene's integral form the run from the coarser
+  // mesh ends at another penalty stage: a and p0 differ from the plain
+  // run's by 5e-4, within the penalty tolerance, not by 1e-5.)
   check(out, "two_bodies_3d", "hertz_sphere_block.prm", 6.920603, 0., 1e-5,
-        "mpirun --allow-run-as-root --oversubscribe -np 2 ");
+        "mpirun --allow-run-as-root --oversubscribe -np 2 ",
+        "subsection Contact\n  subsection Two bodies\n"
+        "    set Contact form = nodal\n  end\nend\n");
 
   for (const auto &[name, edit] :
        {std::pair<std::string, std::string>{"with refinement cycles",

@@ -50,6 +50,9 @@ subsection Body 1
     set Upper corner = -0.5, 1
     set Subdivisions = 4, 4
   end
+  subsection Material
+    set Young's modulus = 1
+  end
 end
 subsection Body 2
   set Active      = true
@@ -60,6 +63,9 @@ subsection Body 2
     set Upper corner = 4, 1
     set Subdivisions = 16, 4
     set Boundary id offset = 10
+  end
+  subsection Material
+    set Young's modulus = 1
   end
 end
 subsection Boundary conditions
