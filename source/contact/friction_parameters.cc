@@ -1,0 +1,98 @@
+#include <signorini/contact/friction_parameters.h>
+#include <signorini/input_error.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    namespace
+    {
+      const std::string where = "Contact > Friction > ";
+
+      std::string
+      text(const double value)
+      {
+        std::ostringstream s;
+        s << value;
+        return s.str();
+      }
+    } // namespace
+
+    void
+    FrictionParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Coefficient",
+                        "0",
+                        Patterns::Double(),
+                        "Coulomb's friction coefficient mu [-], >= 0: a "
+                        "sliding contact point carries the tangential "
+                        "traction mu times its normal pressure. 0 (the "
+                        "default): frictionless, and nothing of friction is "
+                        "evaluated.");
+      prm.declare_entry("Slip length",
+                        "1e-4",
+                        Patterns::Double(),
+                        "The slip length eps of the regularised Coulomb law, "
+                        "as a fraction of each contact point's local mesh "
+                        "size h (eps = this x h) [-], > 0. A point whose "
+                        "slip over the load step is below eps sticks "
+                        "elastically, with the tangential stiffness "
+                        "2 mu lambda / eps (lambda its normal force); at "
+                        "or beyond eps it slides with |t_T| = mu lambda. "
+                        "Smaller values are closer to exact Coulomb and "
+                        "make the tangential stiffness larger "
+                        "(doc/friction.md).");
+      prm.declare_entry("Outer tolerance",
+                        "1e-6",
+                        Patterns::Double(),
+                        "The outer fixed-point loop of a load step, which "
+                        "lags the normal forces and tangent bases, stops "
+                        "when the normal forces change by less than this, "
+                        "relative to the largest of them (max_k |lambda_k "
+                        "- lambda_k,previous| / max_k lambda_k) [-], > 0.");
+      prm.declare_entry("Maximum outer iterations",
+                        "10",
+                        Patterns::Integer(),
+                        "At most this many outer iterations (minimisations "
+                        "with updated normal forces and bases) per load "
+                        "step, >= 1; a load step whose loop has not met the "
+                        "'Outer tolerance' by then fails.");
+    }
+
+    void
+    FrictionParameters::parse_parameters(ParameterHandler &prm)
+    {
+      coefficient     = prm.get_double("Coefficient");
+      slip_length     = prm.get_double("Slip length");
+      outer_tolerance = prm.get_double("Outer tolerance");
+      const long iterations = prm.get_integer("Maximum outer iterations");
+      if (iterations < 1)
+        throw InputError(where + "Maximum outer iterations",
+                         "must be >= 1, got " + prm.get("Maximum outer iterations"));
+      max_outer_iterations = static_cast<unsigned int>(iterations);
+      check();
+    }
+
+    void
+    FrictionParameters::check() const
+    {
+      if (!(coefficient >= 0.) || !std::isfinite(coefficient))
+        throw InputError(where + "Coefficient",
+                         "must be a finite number >= 0, got " + text(coefficient));
+      if (!(slip_length > 0.) || !std::isfinite(slip_length))
+        throw InputError(where + "Slip length",
+                         "must be a finite number > 0 (a fraction of the mesh "
+                         "size), got " + text(slip_length));
+      if (!(outer_tolerance > 0.) || !std::isfinite(outer_tolerance))
+        throw InputError(where + "Outer tolerance",
+                         "must be a finite number > 0, got " + text(outer_tolerance));
+      if (max_outer_iterations < 1)
+        throw InputError(where + "Maximum outer iterations",
+                         "must be >= 1, got " + std::to_string(max_outer_iterations));
+    }
+  } // namespace Contact
+} // namespace Signorini
