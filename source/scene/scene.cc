@@ -1,3 +1,4 @@
+#include <signorini/first_error.h>
 #include <signorini/input_error.h>
 #include <signorini/scene/mesh.h>
 #include <signorini/scene/scene.h>
@@ -13,7 +14,9 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
+#include <string>
 
 namespace Signorini
 {
@@ -79,32 +82,177 @@ namespace Signorini
 
   template <int dim>
   void
-  Scene<dim>::save(const std::string &mesh_file,
-                   const VectorType  &saved_solution,
-                   const VectorType  &pattern) const
+  Scene<dim>::save(const std::string                         &mesh_file,
+                   const std::vector<const VectorType *>     &vectors,
+                   const std::vector<const VectorType *>     &dof_fields,
+                   const std::vector<const Vector<double> *> &cell_fields) const
   {
-    VectorType a(locally_owned, locally_relevant, comm);
-    VectorType b(locally_owned, locally_relevant, comm);
-    a = saved_solution;
-    b = pattern;
+    // Both attachments read the values of each cell's DoFs: ghosted
+    // copies.
+    auto ghosted_copies = [this](const std::vector<const VectorType *> &owned) {
+      std::vector<VectorType> copies(owned.size());
+      for (unsigned int v = 0; v < owned.size(); ++v)
+        {
+          copies[v].reinit(locally_owned, locally_relevant, comm);
+          copies[v] = *owned[v];
+        }
+      return copies;
+    };
+    const std::vector<VectorType> ghosted = ghosted_copies(vectors);
+    std::vector<const VectorType *> attached;
+    for (const auto &v : ghosted)
+      attached.push_back(&v);
     parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
-    transfer.prepare_for_serialization(std::vector<const VectorType *>{&a, &b});
+    transfer.prepare_for_serialization(attached);
+
+    // The fields are zero away from the contact nodes (the nodal ones):
+    // each cell carries their values only where one of them is not zero
+    // (variable-size data).
+    const std::vector<VectorType> fields = ghosted_copies(dof_fields);
+    if (!fields.empty() || !cell_fields.empty())
+      {
+        auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(triangulation);
+        tria.register_data_attach(
+          [this, &fields, &cell_fields](
+            const typename Triangulation<dim>::cell_iterator &cell,
+            const typename parallel::distributed::Triangulation<dim>::CellStatus) {
+            const std::vector<double> values = field_values(cell, fields, cell_fields);
+            std::vector<char>         data(values.size() * sizeof(double));
+            std::memcpy(data.data(), values.data(), data.size());
+            return data;
+          },
+          /*returns_variable_size_data=*/true);
+      }
     triangulation.save(mesh_file);
   }
 
   template <int dim>
-  void
-  Scene<dim>::load_vectors()
+  std::vector<double>
+  Scene<dim>::field_values(const typename Triangulation<dim>::cell_iterator &cell,
+                           const std::vector<VectorType>                    &fields,
+                           const std::vector<const Vector<double> *> &cell_fields) const
   {
-    VectorType a(locally_owned, comm), b(locally_owned, comm);
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
-    std::vector<VectorType *> vectors{&a, &b};
-    transfer.deserialize(vectors);
-    solution         = a;
-    solution_ghosted = solution;
-    VectorType pattern(locally_owned, locally_relevant, comm);
-    pattern = b;
-    build_matrix(pattern);
+    const typename DoFHandler<dim>::active_cell_iterator dof_cell(&triangulation,
+                                                                  cell->level(),
+                                                                  cell->index(),
+                                                                  &dof_handler);
+    std::vector<double> values;
+    Vector<double>      local(fe->n_dofs_per_cell());
+    for (const auto &f : fields)
+      {
+        dof_cell->get_dof_values(f, local);
+        values.insert(values.end(), local.begin(), local.end());
+      }
+    for (const auto *c : cell_fields)
+      values.push_back((*c)[cell->active_cell_index()]);
+    if (std::none_of(values.begin(), values.end(), [](const double x) { return x != 0.; }))
+      values.clear();
+    return values;
+  }
+
+  template <int dim>
+  unsigned long long
+  Scene<dim>::field_bytes(const std::vector<const VectorType *>     &dof_fields,
+                          const std::vector<const Vector<double> *> &cell_fields) const
+  {
+    std::vector<VectorType> fields(dof_fields.size());
+    for (unsigned int f = 0; f < dof_fields.size(); ++f)
+      {
+        fields[f].reinit(locally_owned, locally_relevant, comm);
+        fields[f] = *dof_fields[f];
+      }
+    unsigned long long bytes = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        bytes += sizeof(double) * field_values(cell, fields, cell_fields).size();
+    return Utilities::MPI::sum(bytes, comm);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::unpack_attached(const DoFHandler<dim>       &dofs,
+                              const unsigned int           n_vectors,
+                              const unsigned int           n_dof_fields,
+                              std::vector<VectorType>     &vectors,
+                              std::vector<Vector<double>> &cell_fields)
+  {
+    auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(
+      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+        dofs.get_triangulation()));
+    std::vector<VectorType *> targets;
+    for (unsigned int v = 0; v < n_vectors; ++v)
+      targets.push_back(&vectors[v]);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
+    transfer.deserialize(targets);
+    if (n_dof_fields == 0 && cell_fields.empty())
+      return;
+    const unsigned int per_cell = dofs.get_fe().n_dofs_per_cell();
+    const unsigned int size     = n_dof_fields * per_cell + cell_fields.size();
+    // The handle of the fields' attachment (save()'s callback is not
+    // called on load).
+    const unsigned int handle = tria.register_data_attach(
+      [](const typename Triangulation<dim>::cell_iterator &,
+         const typename parallel::distributed::Triangulation<dim>::CellStatus) {
+        return std::vector<char>();
+      },
+      /*returns_variable_size_data=*/true);
+    std::string error;
+    tria.notify_ready_to_unpack(
+      handle,
+      [&](const typename Triangulation<dim>::cell_iterator &cell,
+          const typename parallel::distributed::Triangulation<dim>::CellStatus,
+          const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        if (data.empty())
+          return; // every field is zero on this cell
+        if (static_cast<std::size_t>(data.size()) != size * sizeof(double))
+          {
+            error = "a cell carries " + std::to_string(data.size()) +
+                    " bytes of fields instead of " +
+                    std::to_string(size * sizeof(double));
+            return;
+          }
+        std::vector<double> values(size);
+        std::memcpy(values.data(), &*data.begin(), data.size());
+        const typename DoFHandler<dim>::active_cell_iterator dof_cell(&tria,
+                                                                      cell->level(),
+                                                                      cell->index(),
+                                                                      &dofs);
+        Vector<double> local(per_cell);
+        for (unsigned int f = 0; f < n_dof_fields; ++f)
+          {
+            std::copy(values.begin() + f * per_cell,
+                      values.begin() + (f + 1) * per_cell,
+                      local.begin());
+            dof_cell->set_dof_values(local, vectors[n_vectors + f]);
+          }
+        for (unsigned int c = 0; c < cell_fields.size(); ++c)
+          cell_fields[c][cell->active_cell_index()] = values[n_dof_fields * per_cell + c];
+      });
+    for (unsigned int f = 0; f < n_dof_fields; ++f)
+      vectors[n_vectors + f].compress(VectorOperation::insert);
+    error = first_error(dofs.get_communicator(), error);
+    if (!error.empty())
+      throw std::runtime_error(error);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::load_attached(const std::string           &mesh_file,
+                            const bool                   loaded_here,
+                            const unsigned int           n_vectors,
+                            const unsigned int           n_dof_fields,
+                            const unsigned int           n_cell_fields,
+                            std::vector<VectorType>     &vectors,
+                            std::vector<Vector<double>> &cell_vectors)
+  {
+    vectors.assign(n_vectors + n_dof_fields, VectorType());
+    for (auto &v : vectors)
+      v.reinit(locally_owned, comm);
+    cell_vectors.assign(n_cell_fields, Vector<double>(triangulation.n_active_cells()));
+    if (!loaded_here)
+      throw std::logic_error("Scene::load_attached: the mesh was not loaded from " +
+                             mesh_file);
+    unpack_attached(dof_handler, n_vectors, n_dof_fields, vectors, cell_vectors);
   }
 
   template <int dim>
