@@ -560,14 +560,8 @@ namespace Signorini
         const std::string directory = args[0];
         return guarded(directory, root, [&]() -> int {
           const std::string        folder = Checkpoint::newest(directory);
+          // On any number of ranks (Simulator::restore()).
           const Checkpoint::Header header = Checkpoint::read_header(folder);
-          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-          if (header.n_ranks != n_ranks)
-            throw InputError("--restart",
-                             folder + " was written by " +
-                               std::to_string(header.n_ranks) +
-                               " MPI rank(s); restart it with as many (this "
-                               "run has " + std::to_string(n_ranks) + ")");
           std::string file;
           if (args.size() == 2)
             {

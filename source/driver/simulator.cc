@@ -718,7 +718,8 @@ namespace Signorini
                     << resume.mesh_ready << resume.refined_cells << saved
                     << resume.file_sizes << resume.parts;
             // This rank's entries of the vectors and of the fields, for a
-            // mesh built as before (the same DoF numbering and cells).
+            // restart on as many ranks on a mesh built as before (the
+            // same DoF numbering and cells).
             std::vector<double> values;
             for (const VectorType *v : {&resume.solution, &resume.pattern})
               {
@@ -785,12 +786,21 @@ namespace Signorini
   void
   Simulator<dim>::restore(const std::string &folder)
   {
-    const std::string file =
-      Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
-    // Each rank reads its own state file. What fails there (a missing or
-    // damaged file) is every rank's error, named after the first rank
-    // that met it: the other ranks must not go on into the collectives
-    // below.
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    // On as many ranks as the run that wrote it, each rank reads its own
+    // state file; on another number, every rank reads rank 0's for what is
+    // the same on every rank, and the state on nodes and cells comes from
+    // the fields attached to the mesh.
+    const unsigned int saved_ranks = Checkpoint::read_header(folder).n_ranks;
+    const bool         same_ranks  = saved_ranks == n_ranks;
+    const std::string  file = Checkpoint::state_file(folder, same_ranks ? rank : 0);
+    if (!same_ranks)
+      pcout << folder << " was written on " << saved_ranks
+            << " MPI rank(s): its state is transferred to " << n_ranks << std::endl;
+    // What fails there (a missing or damaged file) is every rank's error,
+    // named after the first rank that met it: the other ranks must not go
+    // on into the collectives below.
     Checkpoint::Header  header;
     Report              saved;
     std::string         parts;
@@ -806,7 +816,7 @@ namespace Signorini
         archive >> header;
         archive >> time >> dt >> step >> mesh_ready >> refined_cells >> saved >>
           resume.file_sizes >> parts;
-        if (header.mesh_as_built)
+        if (same_ranks && header.mesh_as_built)
           {
             archive >> values[0] >> values[1];
             if (values[0].size() != scene->locally_owned.n_elements())
@@ -833,7 +843,7 @@ namespace Signorini
     // The solution, the state the Hessian's structure was built at, and
     // the fields of the parts' state.
     VectorType pattern(scene->locally_owned, comm);
-    if (header.mesh_as_built)
+    if (same_ranks && header.mesh_as_built)
       {
         // The same mesh, DoF numbering and cells as the run that wrote it:
         // entry by entry.
@@ -861,12 +871,14 @@ namespace Signorini
       }
     else
       {
-        // Cell by cell, from the mesh loaded from the checkpoint.
+        // Cell by cell: from the mesh loaded from the checkpoint, or, for
+        // a mesh built from the parameters on another number of ranks,
+        // from the checkpoint's mesh loaded beside it.
         std::vector<VectorType> vectors;
         try
           {
             scene->load_attached(Checkpoint::mesh_file(folder),
-                                 true,
+                                 !header.mesh_as_built,
                                  2,
                                  header.n_dof_fields,
                                  header.n_cell_fields,
@@ -876,7 +888,8 @@ namespace Signorini
         catch (const std::runtime_error &e)
           {
             throw InputError("--restart",
-                             std::string("cannot continue ") + folder + ": " + e.what());
+                             std::string("cannot continue ") + folder + " on " +
+                               std::to_string(n_ranks) + " rank(s): " + e.what());
           }
         scene->solution = vectors[0];
         pattern         = vectors[1];

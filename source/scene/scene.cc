@@ -13,9 +13,14 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace Signorini
@@ -36,6 +41,8 @@ namespace Signorini
         material_objects.push_back(body.material);
         materials[body.material_id] = body.material.get();
       }
+    mesh_parameters  = p.mesh;
+    this->geometries = geometries;
     build_scene_mesh(p.mesh, geometries, material_ids, triangulation,
                      !mesh_file.empty());
     if (!mesh_file.empty())
@@ -235,6 +242,25 @@ namespace Signorini
       throw std::runtime_error(error);
   }
 
+  namespace
+  {
+    /// The active cell of @p tria with @p id, if this rank has it (locally
+    /// owned, ghost or artificial), else tria.end().
+    template <int dim>
+    typename Triangulation<dim>::cell_iterator
+    find_active_cell(const Triangulation<dim> &tria, const CellId &id)
+    {
+      auto cell = tria.create_cell_iterator(CellId(id.get_coarse_cell_id(), {}));
+      for (const auto child : id.get_child_indices())
+        {
+          if (!cell->has_children())
+            return tria.end();
+          cell = cell->child(child);
+        }
+      return cell->has_children() ? tria.end() : cell;
+    }
+  } // namespace
+
   template <int dim>
   void
   Scene<dim>::load_attached(const std::string           &mesh_file,
@@ -249,10 +275,116 @@ namespace Signorini
     for (auto &v : vectors)
       v.reinit(locally_owned, comm);
     cell_vectors.assign(n_cell_fields, Vector<double>(triangulation.n_active_cells()));
-    if (!loaded_here)
-      throw std::logic_error("Scene::load_attached: the mesh was not loaded from " +
-                             mesh_file);
-    unpack_attached(dof_handler, n_vectors, n_dof_fields, vectors, cell_vectors);
+    if (loaded_here)
+      {
+        unpack_attached(dof_handler, n_vectors, n_dof_fields, vectors, cell_vectors);
+        return;
+      }
+
+    // The saved mesh beside this one: the same coarse mesh, refined as
+    // saved, partitioned among this run's ranks.
+    parallel::distributed::Triangulation<dim> saved(
+      comm, Triangulation<dim>::limit_level_difference_at_vertices);
+    build_scene_mesh(mesh_parameters, geometries, material_ids, saved, true);
+    saved.load(mesh_file);
+    if (saved.n_global_active_cells() != triangulation.n_global_active_cells())
+      throw std::runtime_error(
+        mesh_file + " has " + std::to_string(saved.n_global_active_cells()) +
+        " cells, the mesh the parameters build has " +
+        std::to_string(triangulation.n_global_active_cells()));
+    DoFHandler<dim> saved_dofs(saved);
+    saved_dofs.distribute_dofs(*fe);
+    const IndexSet saved_owned = saved_dofs.locally_owned_dofs();
+    const IndexSet saved_relevant = DoFTools::extract_locally_relevant_dofs(saved_dofs);
+    const unsigned int      n_all = n_vectors + n_dof_fields;
+    std::vector<VectorType> owned(n_all), values(n_all);
+    for (unsigned int v = 0; v < n_all; ++v)
+      owned[v].reinit(saved_owned, comm);
+    std::vector<Vector<double>> saved_cells(n_cell_fields,
+                                            Vector<double>(saved.n_active_cells()));
+    unpack_attached(saved_dofs, n_vectors, n_dof_fields, owned, saved_cells);
+    for (unsigned int v = 0; v < n_all; ++v)
+      {
+        values[v].reinit(saved_owned, saved_relevant, comm);
+        values[v] = owned[v];
+      }
+
+    // Each locally owned cell takes the values of the saved cell with its
+    // CellId: in one piece where that cell is locally owned here too (p4est
+    // partitions both meshes the same way, so that is every cell), the
+    // others from the rank that owns them.
+    const unsigned int per_cell = fe->n_dofs_per_cell();
+    // One cell's values: every vector's DoF values, then the cell values.
+    auto cell_values = [&](const typename Triangulation<dim>::cell_iterator &source) {
+      const typename DoFHandler<dim>::active_cell_iterator dof_cell(&saved,
+                                                                    source->level(),
+                                                                    source->index(),
+                                                                    &saved_dofs);
+      std::vector<double> all;
+      Vector<double>      local(per_cell);
+      for (unsigned int v = 0; v < n_all; ++v)
+        {
+          dof_cell->get_dof_values(values[v], local);
+          all.insert(all.end(), local.begin(), local.end());
+        }
+      for (unsigned int c = 0; c < n_cell_fields; ++c)
+        all.push_back(saved_cells[c][source->active_cell_index()]);
+      return all;
+    };
+    auto set_cell = [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+                        const std::vector<double>                            &all) {
+      Vector<double> local(per_cell);
+      for (unsigned int v = 0; v < n_all; ++v)
+        {
+          std::copy(all.begin() + v * per_cell, all.begin() + (v + 1) * per_cell,
+                    local.begin());
+          cell->set_dof_values(local, vectors[v]);
+        }
+      for (unsigned int c = 0; c < n_cell_fields; ++c)
+        cell_vectors[c][cell->active_cell_index()] = all[n_all * per_cell + c];
+    };
+    std::map<std::string, typename DoFHandler<dim>::active_cell_iterator> missing;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto source = find_active_cell(saved, cell->id());
+          if (source != saved.end() && source->is_locally_owned())
+            set_cell(cell, cell_values(source));
+          else
+            missing[cell->id().to_string()] = cell;
+        }
+    if (Utilities::MPI::logical_or(!missing.empty(), comm))
+      {
+        std::vector<std::string> wanted;
+        for (const auto &m : missing)
+          wanted.push_back(m.first);
+        std::vector<std::pair<std::string, std::vector<double>>> answers;
+        for (const auto &list : Utilities::MPI::all_gather(comm, wanted))
+          for (const auto &id : list)
+            {
+              const auto source = find_active_cell(saved, CellId(id));
+              if (source != saved.end() && source->is_locally_owned())
+                answers.emplace_back(id, cell_values(source));
+            }
+        for (const auto &list : Utilities::MPI::all_gather(comm, answers))
+          for (const auto &[id, all] : list)
+            {
+              const auto m = missing.find(id);
+              if (m != missing.end())
+                {
+                  set_cell(m->second, all);
+                  missing.erase(m);
+                }
+            }
+        const unsigned int lost =
+          Utilities::MPI::sum(static_cast<unsigned int>(missing.size()), comm);
+        if (lost > 0)
+          throw std::runtime_error(
+            std::to_string(lost) + " cells of the mesh the parameters build are not "
+            "in " + mesh_file + ": the meshes differ");
+      }
+    for (auto &v : vectors)
+      v.compress(VectorOperation::insert);
   }
 
   template <int dim>

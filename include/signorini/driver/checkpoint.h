@@ -23,8 +23,10 @@ namespace Signorini
    * on every rank (penalty, barrier, broad-phase counters, output series;
    * Ipopt's multipliers, Ipopt running on one rank), then this rank's
    * entries of the vectors and fields); and the parameters it ran with
-   * (parameters.prm). It is written under a temporary name and renamed
-   * when complete; the newest 'Keep' checkpoints are kept. A checkpoint is always written when the run is
+   * (parameters.prm). `signorini --restart` continues it on any number of
+   * ranks (Simulator::restore(), doc/robustness.md). It is written under
+   * a temporary name and renamed when complete; the newest 'Keep'
+   * checkpoints are kept. A checkpoint is always written when the run is
    * interrupted by SIGINT or SIGTERM, whatever these settings say.
    */
   struct CheckpointParameters
@@ -68,11 +70,14 @@ namespace Signorini
       std::string  parameter_file; // as the original run named it
       std::string  parameters;     // the used parameters (ShortPRM text)
       /// The mesh is the one the parameters build (no refinement cycle
-      /// yet): the restarted run builds it the same way, which gives the
-      /// same cells in the same order, hence the same DoF numbering and
-      /// the same round-off; the vectors and fields are then restored
-      /// entry by entry. Otherwise the mesh is loaded from the checkpoint
-      /// (p4est) and the vectors and fields are transferred cell by cell.
+      /// yet): the restarted run builds it the same way. On as many ranks,
+      /// that gives the same cells in the same order, hence the same DoF
+      /// numbering and the same round-off, and the vectors are restored
+      /// entry by entry from each rank's state file; on another number of
+      /// ranks the vectors are copied cell by cell (by CellId) from the
+      /// checkpoint's mesh, loaded beside the built one. Otherwise the mesh
+      /// is loaded from the checkpoint (p4est, on any number of ranks) and
+      /// the vectors are transferred cell by cell with it.
       bool mesh_as_built = true;
       /// With 'Estimate from a coarser mesh' the mesh counts as built
       /// throughout: the restarted run coarsens it again, and, if this

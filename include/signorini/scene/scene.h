@@ -77,10 +77,14 @@ namespace Signorini
      * @p vectors its @p n_vectors vectors, then its @p n_dof_fields fields
      * on the DoFs (locally owned, on this scene's DoFs), into
      * @p cell_fields its @p n_cell_fields fields on cells (valid on the
-     * locally owned cells). @p loaded_here: this mesh is the one the
-     * constructor loaded from @p mesh_file (the data comes with it).
-     * Collective; std::runtime_error, on every rank, if the data does not
-     * match.
+     * locally owned cells). With @p loaded_here this mesh is the one the
+     * constructor loaded from @p mesh_file: the data comes with it, on any
+     * number of ranks. Otherwise this mesh was built from the parameters
+     * (the same cells as the saved mesh, on another partition when the
+     * number of ranks differs): the saved mesh is loaded beside it and
+     * the values are copied from its cells to the cells with the same
+     * CellId. Collective; std::runtime_error, on every rank, if the two
+     * meshes do not have the same cells.
      */
     void
     load_attached(const std::string           &mesh_file,
@@ -187,5 +191,8 @@ namespace Signorini
                  const std::vector<const Vector<double> *>        &cell_fields) const;
 
     Contact::Model<dim> *contact_model = nullptr;
+    /// What builds the coarse mesh again (load_attached()).
+    MeshParameters            mesh_parameters;
+    std::vector<BodyGeometry> geometries;
   };
 } // namespace Signorini
