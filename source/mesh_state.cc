@@ -39,6 +39,31 @@ namespace Signorini
     cell_entries.push_back(std::move(entries));
   }
 
+  std::vector<VectorType>
+  MeshState::dof_vectors(const IndexSet &owned, const MPI_Comm comm) const
+  {
+    std::vector<VectorType> vectors(dof_entries.size());
+    for (std::size_t f = 0; f < dof_entries.size(); ++f)
+      {
+        vectors[f].reinit(owned, comm);
+        for (const auto &[dof, value] : dof_entries[f])
+          vectors[f][dof] = value;
+        vectors[f].compress(VectorOperation::insert);
+      }
+    return vectors;
+  }
+
+  std::vector<Vector<double>>
+  MeshState::cell_vectors(const unsigned int n_active_cells) const
+  {
+    std::vector<Vector<double>> vectors(cell_entries.size(),
+                                        Vector<double>(n_active_cells));
+    for (std::size_t f = 0; f < cell_entries.size(); ++f)
+      for (const auto &[cell, value] : cell_entries[f])
+        vectors[f][cell] = value;
+    return vectors;
+  }
+
   std::vector<double>
   MeshState::load_dof_field(const std::vector<types::global_dof_index> &dofs)
   {

@@ -2,6 +2,7 @@
 
 #include <signorini/types.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/vector.h>
 
@@ -59,6 +60,15 @@ namespace Signorini
     /// The next field on cells, read on the active cells @p cells.
     std::vector<double>
     load_cell_field(const std::vector<unsigned int> &cells);
+
+    /// The saved fields on DoFs as locally owned vectors with @p owned
+    /// (this rank's entries set, the rest zero).
+    std::vector<VectorType>
+    dof_vectors(const IndexSet &owned, const MPI_Comm comm) const;
+
+    /// The saved fields on cells as vectors of @p n_active_cells values.
+    std::vector<Vector<double>>
+    cell_vectors(const unsigned int n_active_cells) const;
 
     /// The fields saved, this rank's entries.
     std::vector<DofEntries>  dof_entries;

@@ -611,25 +611,16 @@ namespace Signorini
     const MeshState   &mesh_state = resume.mesh_state;
     const unsigned int n_dof_fields  = mesh_state.dof_entries.size();
     const unsigned int n_cell_fields = mesh_state.cell_entries.size();
-    std::vector<VectorType> fields(n_dof_fields);
+    const std::vector<VectorType> fields =
+      mesh_state.dof_vectors(scene->locally_owned, comm);
+    const std::vector<Vector<double>> cell_fields =
+      mesh_state.cell_vectors(scene->triangulation.n_active_cells());
     std::vector<const VectorType *> dof_fields;
-    for (unsigned int f = 0; f < n_dof_fields; ++f)
-      {
-        fields[f].reinit(scene->locally_owned, comm);
-        for (const auto &[dof, value] : mesh_state.dof_entries[f])
-          fields[f][dof] = value;
-        fields[f].compress(VectorOperation::insert);
-        dof_fields.push_back(&fields[f]);
-      }
-    std::vector<Vector<double>> cell_fields(
-      n_cell_fields, Vector<double>(scene->triangulation.n_active_cells()));
+    for (const auto &f : fields)
+      dof_fields.push_back(&f);
     std::vector<const Vector<double> *> cell_vectors;
-    for (unsigned int f = 0; f < n_cell_fields; ++f)
-      {
-        for (const auto &[cell, value] : mesh_state.cell_entries[f])
-          cell_fields[f][cell] = value;
-        cell_vectors.push_back(&cell_fields[f]);
-      }
+    for (const auto &f : cell_fields)
+      cell_vectors.push_back(&f);
     std::size_t n_entries = 0;
     for (const auto &f : mesh_state.dof_entries)
       n_entries += f.size();
@@ -853,21 +844,9 @@ namespace Signorini
             scene->solution[i] = values[0][k];
             pattern[i]         = values[1][k++];
           }
-        for (const auto &entries : mesh_state.dof_entries)
-          {
-            VectorType field(scene->locally_owned, comm);
-            for (const auto &[dof, value] : entries)
-              field[dof] = value;
-            field.compress(VectorOperation::insert);
-            mesh_state.dof_fields.push_back(std::move(field));
-          }
-        for (const auto &entries : mesh_state.cell_entries)
-          {
-            Vector<double> field(scene->triangulation.n_active_cells());
-            for (const auto &[cell, value] : entries)
-              field[cell] = value;
-            mesh_state.cell_fields.push_back(std::move(field));
-          }
+        mesh_state.dof_fields  = mesh_state.dof_vectors(scene->locally_owned, comm);
+        mesh_state.cell_fields =
+          mesh_state.cell_vectors(scene->triangulation.n_active_cells());
       }
     else
       {

@@ -96,15 +96,6 @@ namespace Signorini
   {
     // Both attachments read the values of each cell's DoFs: ghosted
     // copies.
-    auto ghosted_copies = [this](const std::vector<const VectorType *> &owned) {
-      std::vector<VectorType> copies(owned.size());
-      for (unsigned int v = 0; v < owned.size(); ++v)
-        {
-          copies[v].reinit(locally_owned, locally_relevant, comm);
-          copies[v] = *owned[v];
-        }
-      return copies;
-    };
     const std::vector<VectorType> ghosted = ghosted_copies(vectors);
     std::vector<const VectorType *> attached;
     for (const auto &v : ghosted)
@@ -131,6 +122,19 @@ namespace Signorini
           /*returns_variable_size_data=*/true);
       }
     triangulation.save(mesh_file);
+  }
+
+  template <int dim>
+  std::vector<VectorType>
+  Scene<dim>::ghosted_copies(const std::vector<const VectorType *> &owned) const
+  {
+    std::vector<VectorType> copies(owned.size());
+    for (unsigned int v = 0; v < owned.size(); ++v)
+      {
+        copies[v].reinit(locally_owned, locally_relevant, comm);
+        copies[v] = *owned[v];
+      }
+    return copies;
   }
 
   template <int dim>
@@ -162,13 +166,8 @@ namespace Signorini
   Scene<dim>::field_bytes(const std::vector<const VectorType *>     &dof_fields,
                           const std::vector<const Vector<double> *> &cell_fields) const
   {
-    std::vector<VectorType> fields(dof_fields.size());
-    for (unsigned int f = 0; f < dof_fields.size(); ++f)
-      {
-        fields[f].reinit(locally_owned, locally_relevant, comm);
-        fields[f] = *dof_fields[f];
-      }
-    unsigned long long bytes = 0;
+    const std::vector<VectorType> fields = ghosted_copies(dof_fields);
+    unsigned long long            bytes  = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         bytes += sizeof(double) * field_values(cell, fields, cell_fields).size();

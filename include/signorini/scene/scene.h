@@ -182,6 +182,10 @@ namespace Signorini
                     std::vector<VectorType>     &vectors,
                     std::vector<Vector<double>> &cell_fields);
 
+    /// Ghosted copies (locally relevant) of the locally owned @p owned.
+    std::vector<VectorType>
+    ghosted_copies(const std::vector<const VectorType *> &owned) const;
+
     /// The values save() attaches to @p cell for the fields (@p fields
     /// ghosted): its DoF values of every field, then its cell values;
     /// empty where all are zero.
