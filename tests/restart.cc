@@ -10,11 +10,16 @@
 //   incompressible bodies (the augmented Lagrangian's multipliers);
 // - adaptive refinement cycles, restarted in the load path and in a cycle;
 // - the estimate from a coarser mesh (2 ranks), restarted on either mesh.
-// Writing checkpoints does not change the run. Bad restarts exit 2 with a
-// message: a changed mesh entry, another number of ranks, no checkpoint,
-// a state file of rank 1 cut short (on 2 ranks, without a hang).
+// Writing checkpoints does not change the run. A run checkpointed on 1
+// rank continues on 2 (tests/restart_ranks: 2 ranks on 1 and 3). Bad
+// restarts exit 2 with a message: a changed mesh entry, another scene's
+// parameters, a checkpoint of the previous format, no checkpoint, a state
+// file of rank 1 cut short (on 2 ranks, without a hang).
 
 #include "run_output.h"
+
+#include <signorini/archive_io.h>
+#include <signorini/driver/checkpoint.h>
 
 #include <algorithm>
 #include <cmath>
@@ -160,10 +165,49 @@ main()
         << verdict(changed.second.find("Mesh > Global refinements: '2' -> '3'") !=
                    std::string::npos)
         << "\n";
-    const auto ranks = RunOutput::execute(mpirun + SIGNORINI_EXECUTABLE +
-                                          " --restart block 2>&1");
-    out << "other rank count: exit code " << ranks.first << ", says so: "
-        << verdict(ranks.second.find("restart it with as many") != std::string::npos)
+    // Another number of ranks: the run on 1 rank continued on 2 from its
+    // first checkpoint (the direct solver there is MUMPS, whose round-off
+    // varies from run to run: the quantities to 1e-8).
+    const std::string on_two = "block_on_2_ranks";
+    std::filesystem::remove_all(on_two);
+    std::filesystem::copy("block", on_two, std::filesystem::copy_options::recursive);
+    const int ranks = restart(checkpoint(on_two, 0), mpirun);
+    out << "other rank count: exit code " << ranks << ", same quantities as without a stop: "
+        << verdict(ranks == 0 &&
+                   RunOutput::largest_quantity_difference("block_plain", on_two) <= 1e-8)
+        << "\n";
+    // Another scene's parameters for this checkpoint.
+    std::ofstream("other_scene.prm")
+      << "include " << SIGNORINI_SOURCE_DIR << "/prm/default.prm\n"
+      << "set Output directory = block\n";
+    const auto other = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                          " --restart block other_scene.prm 2>&1");
+    out << "another scene: exit code " << other.first << ", says so: "
+        << verdict(other.second.find("cannot continue with changed entries") !=
+                   std::string::npos)
+        << "\n";
+    // A checkpoint of the previous format (6: the state on nodes and cells
+    // was this rank's lists, valid on as many ranks only): its header as
+    // that format wrote it.
+    const std::string old_format = "block_format_6";
+    std::filesystem::remove_all(old_format);
+    std::filesystem::copy("block", old_format, std::filesystem::copy_options::recursive);
+    {
+      Signorini::Checkpoint::Header header;
+      header.format    = 6;
+      header.dimension = 2;
+      header.n_ranks   = 1;
+      std::ofstream                   file(checkpoint(old_format, 0) + "/state-0.bin",
+                             std::ios::binary);
+      boost::archive::binary_oarchive archive(file);
+      archive << header;
+    }
+    const auto old = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +
+                                        " --restart " + checkpoint(old_format, 0) +
+                                        " 2>&1");
+    out << "format 6: exit code " << old.first << ", names the format: "
+        << verdict(old.second.find("checkpoint format 6, this program reads format 7") !=
+                   std::string::npos)
         << "\n";
     std::filesystem::create_directories("empty");
     const auto none = RunOutput::execute(std::string(SIGNORINI_EXECUTABLE) +

@@ -231,6 +231,105 @@ namespace RunOutput
     return first_number(summary_numbers(folder + "/summary.json"), "newton iterations");
   }
 
+  /**
+   * Every quantity's "value" in the run's own "quantities" block of a
+   * summary.json (the last one: each refinement cycle's record before it
+   * has a block of its own), in file order.
+   */
+  inline std::vector<std::pair<std::string, double>>
+  quantity_values(const std::string &summary_file)
+  {
+    const std::string text  = read_text(summary_file);
+    std::vector<std::pair<std::string, double>> values;
+    const auto block = text.rfind("\"quantities\"");
+    if (block == std::string::npos)
+      return values;
+    std::size_t i     = text.find('{', block);
+    int         depth = 0;
+    std::string name;
+    for (; i < text.size(); ++i)
+      if (text[i] == '{')
+        ++depth;
+      else if (text[i] == '}')
+        {
+          if (--depth == 0)
+            break;
+        }
+      else if (text[i] == '"')
+        {
+          const auto        end = text.find('"', i + 1);
+          const std::string key = text.substr(i + 1, end - i - 1);
+          i                     = end;
+          if (depth == 1)
+            name = key;
+          else if (depth == 2 && key == "value")
+            values.emplace_back(name,
+                                std::strtod(text.c_str() + text.find(':', end) + 1,
+                                            nullptr));
+        }
+    return values;
+  }
+
+  /**
+   * The largest difference between the quantities of the runs in folders
+   * @p a and @p b (quantity_values()), each relative to the larger of the
+   * two values, and for a component of a vector (a name with _x, _y or _z
+   * as a word: contact_force_x, reaction_x_boundary_2) relative to that
+   * vector's magnitude, so that a component that vanishes by symmetry
+   * counts as the round-off it is. 1 if the two runs do not have the same
+   * quantities; @p worst_name gets the quantity.
+   */
+  inline double
+  largest_quantity_difference(const std::string &a,
+                              const std::string &b,
+                              std::string       *worst_name = nullptr)
+  {
+    const auto x = quantity_values(a + "/summary.json");
+    const auto y = quantity_values(b + "/summary.json");
+    if (x.empty() || x.size() != y.size())
+      return 1.;
+    // The vector a component belongs to: its name with the component
+    // replaced.
+    auto vector_of = [](std::string name) {
+      for (const std::string c : {"_x", "_y", "_z"})
+        {
+          const auto at = name.find(c);
+          if (at != std::string::npos &&
+              (at + 2 == name.size() || name[at + 2] == '_'))
+            return name.replace(at, 2, "_?");
+        }
+      return std::string();
+    };
+    std::map<std::string, double> magnitude;
+    for (const auto &[name, value] : x)
+      {
+        const auto v = vector_of(name);
+        if (!v.empty())
+          magnitude[v] += value * value;
+      }
+    double worst = 0.;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      {
+        if (x[i].first != y[i].first || !std::isfinite(x[i].second) ||
+            !std::isfinite(y[i].second))
+          return 1.;
+        double     scale = std::max(std::abs(x[i].second), std::abs(y[i].second));
+        const auto v     = vector_of(x[i].first);
+        if (!v.empty())
+          scale = std::max(scale, std::sqrt(magnitude[v]));
+        const double d = x[i].second == y[i].second ?
+                           0. :
+                           std::abs(x[i].second - y[i].second) / scale;
+        if (d > worst)
+          {
+            worst = d;
+            if (worst_name)
+              *worst_name = x[i].first;
+          }
+      }
+    return worst;
+  }
+
   /// Whether the runs in @p a and @p b report the same contact force
   /// (y), Hertz half-width a and peak pressure p0, to @p tolerance
   /// relative.

@@ -9,23 +9,21 @@ namespace Signorini
   {
     template <int dim>
     void
-    Model<dim>::save_state(OutputArchive &archive) const
+    Model<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
     {
-      archive << nodal_forces;
+      (void)archive;
+      mesh.save_dof_field(force_dofs(), nodal_forces);
     }
 
     template <int dim>
     void
-    Model<dim>::load_state(InputArchive &archive)
+    Model<dim>::load_state(InputArchive &archive, MeshState &mesh)
     {
-      std::vector<double> forces;
-      archive >> forces;
-      // The checkpoint's mesh, the same ranks: the same contact nodes.
-      AssertThrow(forces.size() == nodal_forces.size() || nodal_forces.empty(),
-                  ExcMessage("the checkpoint has " + std::to_string(forces.size()) +
-                             " contact nodes on this rank, the restarted run " +
-                             std::to_string(nodal_forces.size())));
-      nodal_forces = std::move(forces);
+      (void)archive;
+      const auto dofs = force_dofs();
+      AssertThrow(dofs.size() == nodal_forces.size(),
+                  ExcMessage("the contact model's forces and their DoFs differ in size"));
+      nodal_forces = mesh.load_dof_field(dofs);
     }
 
     namespace

@@ -211,26 +211,40 @@ namespace Signorini
     template void TwoBodyContact<3>::check_initial_state(const VectorType &u) const;
     template <int dim>
     void
-    TwoBodyContact<dim>::save_state(OutputArchive &archive) const
+    TwoBodyContact<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
     {
-      Model<dim>::save_state(archive);
+      Model<dim>::save_state(archive, mesh);
       archive << stats.last_pairs << stats.max_pairs << stats.pattern_pairs
               << stats.pattern_builds;
     }
 
     template <int dim>
     void
-    TwoBodyContact<dim>::load_state(InputArchive &archive)
+    TwoBodyContact<dim>::load_state(InputArchive &archive, MeshState &mesh)
     {
-      Model<dim>::load_state(archive);
+      Model<dim>::load_state(archive, mesh);
       archive >> stats.last_pairs >> stats.max_pairs >> stats.pattern_pairs >>
         stats.pattern_builds;
     }
 
-    template void TwoBodyContact<2>::save_state(OutputArchive &) const;
-    template void TwoBodyContact<3>::save_state(OutputArchive &) const;
-    template void TwoBodyContact<2>::load_state(InputArchive &);
-    template void TwoBodyContact<3>::load_state(InputArchive &);
+    template <int dim>
+    std::vector<types::global_dof_index>
+    TwoBodyContact<dim>::force_dofs() const
+    {
+      std::vector<types::global_dof_index> dofs;
+      for (const auto *list : {&boundary, &target})
+        for (const auto &node : list->nodes())
+          for (unsigned int d = 0; d < dim; ++d)
+            dofs.push_back(node.dofs[d]);
+      return dofs;
+    }
+
+    template void TwoBodyContact<2>::save_state(OutputArchive &, MeshState &) const;
+    template void TwoBodyContact<3>::save_state(OutputArchive &, MeshState &) const;
+    template void TwoBodyContact<2>::load_state(InputArchive &, MeshState &);
+    template void TwoBodyContact<3>::load_state(InputArchive &, MeshState &);
+    template std::vector<types::global_dof_index> TwoBodyContact<2>::force_dofs() const;
+    template std::vector<types::global_dof_index> TwoBodyContact<3>::force_dofs() const;
     template void TwoBodyContact<2>::write_summary(Json &c) const;
     template void TwoBodyContact<3>::write_summary(Json &c) const;
   } // namespace Contact

@@ -147,20 +147,20 @@ namespace Signorini
 
     template <int dim>
     void
-    TwoPassContact<dim>::save_state(OutputArchive &archive) const
+    TwoPassContact<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
     {
-      Model<dim>::save_state(archive);
-      first.save_state(archive);
-      second.save_state(archive);
+      Model<dim>::save_state(archive, mesh);
+      first.save_state(archive, mesh);
+      second.save_state(archive, mesh);
     }
 
     template <int dim>
     void
-    TwoPassContact<dim>::load_state(InputArchive &archive)
+    TwoPassContact<dim>::load_state(InputArchive &archive, MeshState &mesh)
     {
-      Model<dim>::load_state(archive);
-      first.load_state(archive);
-      second.load_state(archive);
+      Model<dim>::load_state(archive, mesh);
+      first.load_state(archive, mesh);
+      second.load_state(archive, mesh);
     }
 
     template class TwoPassContact<2>;

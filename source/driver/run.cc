@@ -230,8 +230,9 @@ namespace Signorini
              "input only: no solve, nothing written)\n"
              "       signorini --restart DIR [FILE.prm]   (continue the run "
              "whose output directory is DIR\n"
-             "                 from its newest checkpoint; FILE.prm may "
-             "extend End time or Number of cycles)\n"
+             "                 from its newest checkpoint, on any number of "
+             "MPI ranks; FILE.prm may\n"
+             "                 extend End time or Number of cycles)\n"
              "       signorini --print-parameters   (every entry with its "
              "default, pattern and documentation)\n"
              "       signorini --help\n\n"
@@ -571,14 +572,8 @@ namespace Signorini
         const std::string directory = args[0];
         return guarded(directory, root, [&]() -> int {
           const std::string        folder = Checkpoint::newest(directory);
+          // On any number of ranks (Simulator::restore()).
           const Checkpoint::Header header = Checkpoint::read_header(folder);
-          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-          if (header.n_ranks != n_ranks)
-            throw InputError("--restart",
-                             folder + " was written by " +
-                               std::to_string(header.n_ranks) +
-                               " MPI rank(s); restart it with as many (this "
-                               "run has " + std::to_string(n_ranks) + ")");
           std::string file;
           if (args.size() == 2)
             {

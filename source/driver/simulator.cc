@@ -551,11 +551,12 @@ namespace Signorini
     resume.pattern       = VectorType(scene->pattern_state);
     {
       std::ostringstream out;
+      resume.mesh_state = MeshState();
       {
         OutputArchive archive(out);
         if (problem->contact)
-          problem->contact->save_state(archive);
-        solver->save_state(archive);
+          problem->contact->save_state(archive, resume.mesh_state);
+        solver->save_state(archive, resume.mesh_state);
         postprocessor->save_state(archive);
       }
       resume.parts = out.str();
@@ -608,6 +609,31 @@ namespace Signorini
         throw OutputFailure("cannot " + what + " the checkpoint " +
                             final_folder + ": " + error);
     };
+    // The state on nodes and cells as fields on the mesh: vectors on the
+    // DoFs and values per active cell.
+    const MeshState   &mesh_state = resume.mesh_state;
+    const unsigned int n_dof_fields  = mesh_state.dof_entries.size();
+    const unsigned int n_cell_fields = mesh_state.cell_entries.size();
+    const std::vector<VectorType> fields =
+      mesh_state.dof_vectors(scene->locally_owned, comm);
+    const std::vector<Vector<double>> cell_fields =
+      mesh_state.cell_vectors(scene->triangulation.n_active_cells());
+    std::vector<const VectorType *> dof_fields;
+    for (const auto &f : fields)
+      dof_fields.push_back(&f);
+    std::vector<const Vector<double> *> cell_vectors;
+    for (const auto &f : cell_fields)
+      cell_vectors.push_back(&f);
+    std::size_t n_entries = 0;
+    for (const auto &f : mesh_state.dof_entries)
+      n_entries += f.size();
+    for (const auto &f : mesh_state.cell_entries)
+      n_entries += f.size();
+    n_entries = Utilities::MPI::sum(n_entries, comm);
+    const double field_bytes =
+      n_dof_fields + n_cell_fields > 0 ?
+        static_cast<double>(scene->field_bytes(dof_fields, cell_vectors)) :
+        0.;
     {
       std::string error;
       if (root)
@@ -623,14 +649,18 @@ namespace Signorini
               // mesh (MPI-IO on a full disk), so the space is checked
               // first, against a bound on what the checkpoint writes: the
               // mesh (p4est's quadrants, 12 bytes a cell here), the two
-              // vectors on each cell (deal.II's fixed-size data), each
-              // rank's state file (the two vectors and the report) and
-              // the parameters, with a quarter more.
-              const double cells = static_cast<double>(scene->n_cells);
+              // vectors on each cell (deal.II's fixed-size data), the
+              // fields on the cells where they are not zero
+              // (variable-size data, with its size per cell), each
+              // rank's state file (the two vectors, the fields' entries
+              // and the report) and the parameters, with a quarter more.
+              const double cells    = static_cast<double>(scene->n_cells);
               const double per_cell =
                 32. + 16. + 2. * 8. * scene->dof_handler.get_fe().n_dofs_per_cell();
               const double needed =
                 1.25 * (cells * per_cell + 2. * 8. * static_cast<double>(scene->n_dofs) +
+                        (field_bytes > 0. ? 4. * cells + field_bytes : 0.) +
+                        16. * static_cast<double>(n_entries) +
                         2048. * (report.steps.size() + report.cycles.size()) +
                         used_parameters.size() + 65536. * report.n_ranks);
               const auto space = std::filesystem::space(folder, ec);
@@ -648,7 +678,8 @@ namespace Signorini
       collective_check(error, "create");
     }
 
-    scene->save(Checkpoint::mesh_file(folder), resume.solution, resume.pattern);
+    scene->save(Checkpoint::mesh_file(folder), {&resume.solution, &resume.pattern},
+                dof_fields, cell_vectors);
 
     Checkpoint::Header header;
     header.dimension      = dim;
@@ -658,6 +689,8 @@ namespace Signorini
     header.parameters     = used_parameters;
     header.mesh_as_built  = resume.mesh_as_built;
     header.refined_back   = resume.refined_back;
+    header.n_dof_fields   = n_dof_fields;
+    header.n_cell_fields  = n_cell_fields;
     Report saved          = resumed_report();
     saved.timing          = run_times(run_timer);
     {
@@ -678,8 +711,9 @@ namespace Signorini
             archive << resume.time << resume.dt << resume.step
                     << resume.mesh_ready << resume.refined_cells << saved
                     << resume.file_sizes << resume.parts;
-            // This rank's entries of the vectors, for a mesh built as
-            // before.
+            // This rank's entries of the vectors and of the fields, for a
+            // restart on as many ranks on a mesh built as before (the
+            // same DoF numbering and cells).
             std::vector<double> values;
             for (const VectorType *v : {&resume.solution, &resume.pattern})
               {
@@ -688,6 +722,7 @@ namespace Signorini
                   values.push_back((*v)[i]);
                 archive << values;
               }
+            archive << mesh_state.dof_entries << mesh_state.cell_entries;
           }
           out.close();
           if (!out)
@@ -745,16 +780,26 @@ namespace Signorini
   void
   Simulator<dim>::restore(const std::string &folder)
   {
-    const std::string file =
-      Checkpoint::state_file(folder, Utilities::MPI::this_mpi_process(comm));
-    // Each rank reads its own state file. What fails there (a missing or
-    // damaged file) is every rank's error, named after the first rank
-    // that met it: the other ranks must not go on into the collectives
-    // below.
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    // On as many ranks as the run that wrote it, each rank reads its own
+    // state file; on another number, every rank reads rank 0's for what is
+    // the same on every rank, and the state on nodes and cells comes from
+    // the fields attached to the mesh.
+    const unsigned int saved_ranks = Checkpoint::read_header(folder).n_ranks;
+    const bool         same_ranks  = saved_ranks == n_ranks;
+    const std::string  file = Checkpoint::state_file(folder, same_ranks ? rank : 0);
+    if (!same_ranks)
+      pcout << folder << " was written on " << saved_ranks
+            << " MPI rank(s): its state is transferred to " << n_ranks << std::endl;
+    // What fails there (a missing or damaged file) is every rank's error,
+    // named after the first rank that met it: the other ranks must not go
+    // on into the collectives below.
     Checkpoint::Header  header;
     Report              saved;
     std::string         parts;
     std::vector<double> values[2];
+    MeshState           mesh_state;
     std::string         error;
     try
       {
@@ -765,7 +810,7 @@ namespace Signorini
         archive >> header;
         archive >> time >> dt >> step >> mesh_ready >> refined_cells >> saved >>
           resume.file_sizes >> parts;
-        if (header.mesh_as_built)
+        if (same_ranks && header.mesh_as_built)
           {
             archive >> values[0] >> values[1];
             if (values[0].size() != scene->locally_owned.n_elements())
@@ -773,6 +818,10 @@ namespace Signorini
                 file + " holds " + std::to_string(values[0].size()) +
                 " DoFs of this rank, the mesh built from the parameters has " +
                 std::to_string(scene->locally_owned.n_elements()));
+            archive >> mesh_state.dof_entries >> mesh_state.cell_entries;
+            if (mesh_state.dof_entries.size() != header.n_dof_fields ||
+                mesh_state.cell_entries.size() != header.n_cell_fields)
+              throw std::runtime_error(file + " holds other fields than its header names");
           }
       }
     catch (const std::exception &e)
@@ -785,26 +834,58 @@ namespace Signorini
     if (!error.empty())
       throw InputError("--restart", error);
 
-    // The solution and the state the Hessian's structure was built at.
-    if (header.mesh_as_built)
+    // The solution, the state the Hessian's structure was built at, and
+    // the fields of the parts' state.
+    VectorType pattern(scene->locally_owned, comm);
+    if (same_ranks && header.mesh_as_built)
       {
-        // The same mesh and DoF numbering as the run that wrote it.
-        VectorType pattern(scene->locally_owned, comm);
+        // The same mesh, DoF numbering and cells as the run that wrote it:
+        // entry by entry.
         std::size_t k = 0;
         for (const auto i : scene->locally_owned)
           {
             scene->solution[i] = values[0][k];
             pattern[i]         = values[1][k++];
           }
-        scene->solution.compress(VectorOperation::insert);
-        pattern.compress(VectorOperation::insert);
-        scene->solution_ghosted = scene->solution;
-        VectorType ghosted(scene->locally_owned, scene->locally_relevant, comm);
-        ghosted = pattern;
-        scene->build_matrix(ghosted);
+        mesh_state.dof_fields  = mesh_state.dof_vectors(scene->locally_owned, comm);
+        mesh_state.cell_fields =
+          mesh_state.cell_vectors(scene->triangulation.n_active_cells());
       }
     else
-      scene->load_vectors();
+      {
+        // Cell by cell: from the mesh loaded from the checkpoint, or, for
+        // a mesh built from the parameters on another number of ranks,
+        // from the checkpoint's mesh loaded beside it.
+        std::vector<VectorType> vectors;
+        try
+          {
+            scene->load_attached(Checkpoint::mesh_file(folder),
+                                 !header.mesh_as_built,
+                                 2,
+                                 header.n_dof_fields,
+                                 header.n_cell_fields,
+                                 vectors,
+                                 mesh_state.cell_fields);
+          }
+        catch (const std::runtime_error &e)
+          {
+            throw InputError("--restart",
+                             std::string("cannot continue ") + folder + " on " +
+                               std::to_string(n_ranks) + " rank(s): " + e.what());
+          }
+        scene->solution = vectors[0];
+        pattern         = vectors[1];
+        for (unsigned int f = 0; f < header.n_dof_fields; ++f)
+          mesh_state.dof_fields.push_back(std::move(vectors[2 + f]));
+      }
+    scene->solution.compress(VectorOperation::insert);
+    pattern.compress(VectorOperation::insert);
+    scene->solution_ghosted = scene->solution;
+    {
+      VectorType ghosted(scene->locally_owned, scene->locally_relevant, comm);
+      ghosted = pattern;
+      scene->build_matrix(ghosted);
+    }
     mesh_as_built = header.mesh_as_built;
     refined_back  = header.refined_back;
 
@@ -821,8 +902,8 @@ namespace Signorini
     std::istringstream part_stream(parts);
     InputArchive       part_archive(part_stream);
     if (problem->contact)
-      problem->contact->load_state(part_archive);
-    solver->load_state(part_archive);
+      problem->contact->load_state(part_archive, mesh_state);
+    solver->load_state(part_archive, mesh_state);
     postprocessor->load_state(part_archive);
 
     // The appended files back to their state at the checkpoint.

@@ -1,3 +1,4 @@
+#include <signorini/first_error.h>
 #include <signorini/input_error.h>
 #include <signorini/scene/mesh.h>
 #include <signorini/scene/scene.h>
@@ -12,8 +13,15 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
+#include <cstring>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace Signorini
 {
@@ -33,6 +41,8 @@ namespace Signorini
         material_objects.push_back(body.material);
         materials[body.material_id] = body.material.get();
       }
+    mesh_parameters  = p.mesh;
+    this->geometries = geometries;
     build_scene_mesh(p.mesh, geometries, material_ids, triangulation,
                      !mesh_file.empty());
     if (!mesh_file.empty())
@@ -79,32 +89,301 @@ namespace Signorini
 
   template <int dim>
   void
-  Scene<dim>::save(const std::string &mesh_file,
-                   const VectorType  &saved_solution,
-                   const VectorType  &pattern) const
+  Scene<dim>::save(const std::string                         &mesh_file,
+                   const std::vector<const VectorType *>     &vectors,
+                   const std::vector<const VectorType *>     &dof_fields,
+                   const std::vector<const Vector<double> *> &cell_fields) const
   {
-    VectorType a(locally_owned, locally_relevant, comm);
-    VectorType b(locally_owned, locally_relevant, comm);
-    a = saved_solution;
-    b = pattern;
+    // Both attachments read the values of each cell's DoFs: ghosted
+    // copies.
+    const std::vector<VectorType> ghosted = ghosted_copies(vectors);
+    std::vector<const VectorType *> attached;
+    for (const auto &v : ghosted)
+      attached.push_back(&v);
     parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
-    transfer.prepare_for_serialization(std::vector<const VectorType *>{&a, &b});
+    transfer.prepare_for_serialization(attached);
+
+    // The fields are zero away from the contact nodes (the nodal ones):
+    // each cell carries their values only where one of them is not zero
+    // (variable-size data).
+    const std::vector<VectorType> fields = ghosted_copies(dof_fields);
+    if (!fields.empty() || !cell_fields.empty())
+      {
+        auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(triangulation);
+        tria.register_data_attach(
+          [this, &fields, &cell_fields](
+            const typename Triangulation<dim>::cell_iterator &cell,
+            const typename parallel::distributed::Triangulation<dim>::CellStatus) {
+            const std::vector<double> values = field_values(cell, fields, cell_fields);
+            std::vector<char>         data(values.size() * sizeof(double));
+            std::memcpy(data.data(), values.data(), data.size());
+            return data;
+          },
+          /*returns_variable_size_data=*/true);
+      }
     triangulation.save(mesh_file);
   }
 
   template <int dim>
-  void
-  Scene<dim>::load_vectors()
+  std::vector<VectorType>
+  Scene<dim>::ghosted_copies(const std::vector<const VectorType *> &owned) const
   {
-    VectorType a(locally_owned, comm), b(locally_owned, comm);
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dof_handler);
-    std::vector<VectorType *> vectors{&a, &b};
-    transfer.deserialize(vectors);
-    solution         = a;
-    solution_ghosted = solution;
-    VectorType pattern(locally_owned, locally_relevant, comm);
-    pattern = b;
-    build_matrix(pattern);
+    std::vector<VectorType> copies(owned.size());
+    for (unsigned int v = 0; v < owned.size(); ++v)
+      {
+        copies[v].reinit(locally_owned, locally_relevant, comm);
+        copies[v] = *owned[v];
+      }
+    return copies;
+  }
+
+  template <int dim>
+  std::vector<double>
+  Scene<dim>::field_values(const typename Triangulation<dim>::cell_iterator &cell,
+                           const std::vector<VectorType>                    &fields,
+                           const std::vector<const Vector<double> *> &cell_fields) const
+  {
+    const typename DoFHandler<dim>::active_cell_iterator dof_cell(&triangulation,
+                                                                  cell->level(),
+                                                                  cell->index(),
+                                                                  &dof_handler);
+    std::vector<double> values;
+    Vector<double>      local(fe->n_dofs_per_cell());
+    for (const auto &f : fields)
+      {
+        dof_cell->get_dof_values(f, local);
+        values.insert(values.end(), local.begin(), local.end());
+      }
+    for (const auto *c : cell_fields)
+      values.push_back((*c)[cell->active_cell_index()]);
+    if (std::none_of(values.begin(), values.end(), [](const double x) { return x != 0.; }))
+      values.clear();
+    return values;
+  }
+
+  template <int dim>
+  unsigned long long
+  Scene<dim>::field_bytes(const std::vector<const VectorType *>     &dof_fields,
+                          const std::vector<const Vector<double> *> &cell_fields) const
+  {
+    const std::vector<VectorType> fields = ghosted_copies(dof_fields);
+    unsigned long long            bytes  = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        bytes += sizeof(double) * field_values(cell, fields, cell_fields).size();
+    return Utilities::MPI::sum(bytes, comm);
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::unpack_attached(const DoFHandler<dim>       &dofs,
+                              const unsigned int           n_vectors,
+                              const unsigned int           n_dof_fields,
+                              std::vector<VectorType>     &vectors,
+                              std::vector<Vector<double>> &cell_fields)
+  {
+    auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(
+      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+        dofs.get_triangulation()));
+    std::vector<VectorType *> targets;
+    for (unsigned int v = 0; v < n_vectors; ++v)
+      targets.push_back(&vectors[v]);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(dofs);
+    transfer.deserialize(targets);
+    if (n_dof_fields == 0 && cell_fields.empty())
+      return;
+    const unsigned int per_cell = dofs.get_fe().n_dofs_per_cell();
+    const unsigned int size     = n_dof_fields * per_cell + cell_fields.size();
+    // The handle of the fields' attachment (save()'s callback is not
+    // called on load).
+    const unsigned int handle = tria.register_data_attach(
+      [](const typename Triangulation<dim>::cell_iterator &,
+         const typename parallel::distributed::Triangulation<dim>::CellStatus) {
+        return std::vector<char>();
+      },
+      /*returns_variable_size_data=*/true);
+    std::string error;
+    tria.notify_ready_to_unpack(
+      handle,
+      [&](const typename Triangulation<dim>::cell_iterator &cell,
+          const typename parallel::distributed::Triangulation<dim>::CellStatus,
+          const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        if (data.empty())
+          return; // every field is zero on this cell
+        if (static_cast<std::size_t>(data.size()) != size * sizeof(double))
+          {
+            error = "a cell carries " + std::to_string(data.size()) +
+                    " bytes of fields instead of " +
+                    std::to_string(size * sizeof(double));
+            return;
+          }
+        std::vector<double> values(size);
+        std::memcpy(values.data(), &*data.begin(), data.size());
+        const typename DoFHandler<dim>::active_cell_iterator dof_cell(&tria,
+                                                                      cell->level(),
+                                                                      cell->index(),
+                                                                      &dofs);
+        Vector<double> local(per_cell);
+        for (unsigned int f = 0; f < n_dof_fields; ++f)
+          {
+            std::copy(values.begin() + f * per_cell,
+                      values.begin() + (f + 1) * per_cell,
+                      local.begin());
+            dof_cell->set_dof_values(local, vectors[n_vectors + f]);
+          }
+        for (unsigned int c = 0; c < cell_fields.size(); ++c)
+          cell_fields[c][cell->active_cell_index()] = values[n_dof_fields * per_cell + c];
+      });
+    for (unsigned int f = 0; f < n_dof_fields; ++f)
+      vectors[n_vectors + f].compress(VectorOperation::insert);
+    error = first_error(dofs.get_communicator(), error);
+    if (!error.empty())
+      throw std::runtime_error(error);
+  }
+
+  namespace
+  {
+    /// The active cell of @p tria with @p id, if this rank has it (locally
+    /// owned, ghost or artificial), else tria.end().
+    template <int dim>
+    typename Triangulation<dim>::cell_iterator
+    find_active_cell(const Triangulation<dim> &tria, const CellId &id)
+    {
+      auto cell = tria.create_cell_iterator(CellId(id.get_coarse_cell_id(), {}));
+      for (const auto child : id.get_child_indices())
+        {
+          if (!cell->has_children())
+            return tria.end();
+          cell = cell->child(child);
+        }
+      return cell->has_children() ? tria.end() : cell;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  Scene<dim>::load_attached(const std::string           &mesh_file,
+                            const bool                   loaded_here,
+                            const unsigned int           n_vectors,
+                            const unsigned int           n_dof_fields,
+                            const unsigned int           n_cell_fields,
+                            std::vector<VectorType>     &vectors,
+                            std::vector<Vector<double>> &cell_vectors)
+  {
+    vectors.assign(n_vectors + n_dof_fields, VectorType());
+    for (auto &v : vectors)
+      v.reinit(locally_owned, comm);
+    cell_vectors.assign(n_cell_fields, Vector<double>(triangulation.n_active_cells()));
+    if (loaded_here)
+      {
+        unpack_attached(dof_handler, n_vectors, n_dof_fields, vectors, cell_vectors);
+        return;
+      }
+
+    // The saved mesh beside this one: the same coarse mesh, refined as
+    // saved, partitioned among this run's ranks.
+    parallel::distributed::Triangulation<dim> saved(
+      comm, Triangulation<dim>::limit_level_difference_at_vertices);
+    build_scene_mesh(mesh_parameters, geometries, material_ids, saved, true);
+    saved.load(mesh_file);
+    if (saved.n_global_active_cells() != triangulation.n_global_active_cells())
+      throw std::runtime_error(
+        mesh_file + " has " + std::to_string(saved.n_global_active_cells()) +
+        " cells, the mesh the parameters build has " +
+        std::to_string(triangulation.n_global_active_cells()));
+    DoFHandler<dim> saved_dofs(saved);
+    saved_dofs.distribute_dofs(*fe);
+    const IndexSet saved_owned = saved_dofs.locally_owned_dofs();
+    const IndexSet saved_relevant = DoFTools::extract_locally_relevant_dofs(saved_dofs);
+    const unsigned int      n_all = n_vectors + n_dof_fields;
+    std::vector<VectorType> owned(n_all), values(n_all);
+    for (unsigned int v = 0; v < n_all; ++v)
+      owned[v].reinit(saved_owned, comm);
+    std::vector<Vector<double>> saved_cells(n_cell_fields,
+                                            Vector<double>(saved.n_active_cells()));
+    unpack_attached(saved_dofs, n_vectors, n_dof_fields, owned, saved_cells);
+    for (unsigned int v = 0; v < n_all; ++v)
+      {
+        values[v].reinit(saved_owned, saved_relevant, comm);
+        values[v] = owned[v];
+      }
+
+    // Each locally owned cell takes the values of the saved cell with its
+    // CellId: in one piece where that cell is locally owned here too (p4est
+    // partitions both meshes the same way, so that is every cell), the
+    // others from the rank that owns them.
+    const unsigned int per_cell = fe->n_dofs_per_cell();
+    // One cell's values: every vector's DoF values, then the cell values.
+    auto cell_values = [&](const typename Triangulation<dim>::cell_iterator &source) {
+      const typename DoFHandler<dim>::active_cell_iterator dof_cell(&saved,
+                                                                    source->level(),
+                                                                    source->index(),
+                                                                    &saved_dofs);
+      std::vector<double> all;
+      Vector<double>      local(per_cell);
+      for (unsigned int v = 0; v < n_all; ++v)
+        {
+          dof_cell->get_dof_values(values[v], local);
+          all.insert(all.end(), local.begin(), local.end());
+        }
+      for (unsigned int c = 0; c < n_cell_fields; ++c)
+        all.push_back(saved_cells[c][source->active_cell_index()]);
+      return all;
+    };
+    auto set_cell = [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+                        const std::vector<double>                            &all) {
+      Vector<double> local(per_cell);
+      for (unsigned int v = 0; v < n_all; ++v)
+        {
+          std::copy(all.begin() + v * per_cell, all.begin() + (v + 1) * per_cell,
+                    local.begin());
+          cell->set_dof_values(local, vectors[v]);
+        }
+      for (unsigned int c = 0; c < n_cell_fields; ++c)
+        cell_vectors[c][cell->active_cell_index()] = all[n_all * per_cell + c];
+    };
+    std::map<std::string, typename DoFHandler<dim>::active_cell_iterator> missing;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto source = find_active_cell(saved, cell->id());
+          if (source != saved.end() && source->is_locally_owned())
+            set_cell(cell, cell_values(source));
+          else
+            missing[cell->id().to_string()] = cell;
+        }
+    if (Utilities::MPI::logical_or(!missing.empty(), comm))
+      {
+        std::vector<std::string> wanted;
+        for (const auto &m : missing)
+          wanted.push_back(m.first);
+        std::vector<std::pair<std::string, std::vector<double>>> answers;
+        for (const auto &list : Utilities::MPI::all_gather(comm, wanted))
+          for (const auto &id : list)
+            {
+              const auto source = find_active_cell(saved, CellId(id));
+              if (source != saved.end() && source->is_locally_owned())
+                answers.emplace_back(id, cell_values(source));
+            }
+        for (const auto &list : Utilities::MPI::all_gather(comm, answers))
+          for (const auto &[id, all] : list)
+            {
+              const auto m = missing.find(id);
+              if (m != missing.end())
+                {
+                  set_cell(m->second, all);
+                  missing.erase(m);
+                }
+            }
+        const unsigned int lost =
+          Utilities::MPI::sum(static_cast<unsigned int>(missing.size()), comm);
+        if (lost > 0)
+          throw std::runtime_error(
+            std::to_string(lost) + " cells of the mesh the parameters build are not "
+            "in " + mesh_file + ": the meshes differ");
+      }
+    for (auto &v : vectors)
+      v.compress(VectorOperation::insert);
   }
 
   template <int dim>

@@ -334,21 +334,29 @@ namespace Signorini
 
   template <int dim>
   void
-  InteriorPointMinimizer<dim>::save_state(OutputArchive &archive) const
+  InteriorPointMinimizer<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
   {
-    archive << warm << z << mu_last << last_regularization;
+    archive << warm << mu_last << last_regularization;
+    mesh.save_dof_field(multiplier_dofs(), z);
   }
 
   template <int dim>
   void
-  InteriorPointMinimizer<dim>::load_state(InputArchive &archive)
+  InteriorPointMinimizer<dim>::load_state(InputArchive &archive, MeshState &mesh)
   {
-    std::vector<double> saved;
-    archive >> warm >> saved >> mu_last >> last_regularization;
-    if (saved.size() == z.size())
-      z = saved;
-    else
-      warm = false;
+    archive >> warm >> mu_last >> last_regularization;
+    z = mesh.load_dof_field(multiplier_dofs());
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  InteriorPointMinimizer<dim>::multiplier_dofs() const
+  {
+    std::vector<types::global_dof_index> dofs;
+    if (contact)
+      for (const auto &node : contact->contact_nodes_on_boundary().nodes())
+        dofs.push_back(node.dofs[0]);
+    return dofs;
   }
 
   template class InteriorPointMinimizer<2>;

@@ -139,22 +139,30 @@ namespace Signorini
 
   template <int dim>
   void
-  InteriorPointStep<dim>::save_state(OutputArchive &archive) const
+  InteriorPointStep<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
   {
-    minimizer.save_state(archive);
+    minimizer.save_state(archive, mesh);
     // The incompressibility multipliers start the next load step.
-    archive << y;
+    mesh.save_cell_field(incompressible_cells(), y);
   }
 
   template <int dim>
   void
-  InteriorPointStep<dim>::load_state(InputArchive &archive)
+  InteriorPointStep<dim>::load_state(InputArchive &archive, MeshState &mesh)
   {
-    minimizer.load_state(archive);
-    std::vector<double> saved;
-    archive >> saved;
-    if (saved.size() == y.size())
-      y = saved;
+    minimizer.load_state(archive, mesh);
+    y = mesh.load_cell_field(incompressible_cells());
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  InteriorPointStep<dim>::incompressible_cells() const
+  {
+    std::vector<unsigned int> cells;
+    if (this->problem.incompressibility)
+      for (const auto &cell : this->problem.incompressibility->cells())
+        cells.push_back(cell->active_cell_index());
+    return cells;
   }
 
   template class InteriorPointStep<2>;

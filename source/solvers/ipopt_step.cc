@@ -73,16 +73,18 @@ namespace Signorini
 
   template <int dim>
   void
-  IpoptStep<dim>::save_state(OutputArchive &archive) const
+  IpoptStep<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
   {
+    (void)mesh;
     archive << derivative_test_errors;
     ipopt->save_state(archive);
   }
 
   template <int dim>
   void
-  IpoptStep<dim>::load_state(InputArchive &archive)
+  IpoptStep<dim>::load_state(InputArchive &archive, MeshState &mesh)
   {
+    (void)mesh;
     archive >> derivative_test_errors;
     ipopt->load_state(archive);
   }

@@ -222,8 +222,9 @@ namespace Signorini
 
   template <int dim>
   void
-  PenaltyStep<dim>::save_state(OutputArchive &archive) const
+  PenaltyStep<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
   {
+    (void)mesh;
     archive << initial_mu0 << last_mu << tolerance_met << newton_stages;
     if (ipopt)
       ipopt->save_state(archive);
@@ -231,8 +232,9 @@ namespace Signorini
 
   template <int dim>
   void
-  PenaltyStep<dim>::load_state(InputArchive &archive)
+  PenaltyStep<dim>::load_state(InputArchive &archive, MeshState &mesh)
   {
+    (void)mesh;
     archive >> initial_mu0 >> last_mu >> tolerance_met >> newton_stages;
     if (ipopt)
       ipopt->load_state(archive);

@@ -4,6 +4,7 @@
 #include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/node_wise_constraints.h>
 #include <signorini/contact/penalty.h>
+#include <signorini/mesh_state.h>
 #include <signorini/output/json.h>
 #include <signorini/types.h>
 
@@ -249,15 +250,22 @@ namespace Signorini
       write_summary(Json &block) const = 0;
 
       /**
-       * Save what the model carries from one load step to the next (this
-       * rank's part) into a checkpoint: the nodal forces, and what a
-       * model adds. load_state() reads it back after the DoFs of the
-       * checkpoint's mesh are set up.
+       * Save what the model carries from one load step to the next into a
+       * checkpoint: the nodal forces as a field on their DoFs into
+       * @p mesh (force_dofs()), and what a model adds (into @p archive
+       * only what is the same on every rank). load_state() reads it back
+       * after the DoFs of the restarted run's mesh are set up, on any
+       * number of ranks.
        */
       virtual void
-      save_state(OutputArchive &archive) const;
+      save_state(OutputArchive &archive, MeshState &mesh) const;
       virtual void
-      load_state(InputArchive &archive);
+      load_state(InputArchive &archive, MeshState &mesh);
+
+      /// The DoF each entry of the nodal forces belongs to (this rank's
+      /// nodes): the force's component on that node.
+      virtual std::vector<types::global_dof_index>
+      force_dofs() const = 0;
 
     protected:
       /// The block's entries every model has: type, boundary id, what the

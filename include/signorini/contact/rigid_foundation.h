@@ -120,6 +120,16 @@ namespace Signorini
       void
       write_summary(Json &block) const override;
 
+      /// One force per node, on the node's first DoF.
+      std::vector<types::global_dof_index>
+      force_dofs() const override
+      {
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &node : boundary.nodes())
+          dofs.push_back(node.dofs[0]);
+        return dofs;
+      }
+
       /// The nodes owned by this rank.
       const std::vector<Node> &
       nodes() const

@@ -171,11 +171,17 @@ namespace Signorini
       void
       write_summary(Json &block) const override;
 
-      /// The forces and the broad phase's statistics.
+      /// The forces (on their nodes' DoFs) and the broad phase's
+      /// statistics (the same on every rank).
       void
-      save_state(OutputArchive &archive) const override;
+      save_state(OutputArchive &archive, MeshState &mesh) const override;
       void
-      load_state(InputArchive &archive) override;
+      load_state(InputArchive &archive, MeshState &mesh) override;
+
+      /// dim forces per node, on the node's DoFs: body 1's contact nodes,
+      /// then body 2's target nodes.
+      std::vector<types::global_dof_index>
+      force_dofs() const override;
 
       /// Rows beyond the locally relevant ones that this rank's pairs may
       /// write to: the sparsity pattern's extra writable rows.

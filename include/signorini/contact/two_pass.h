@@ -212,10 +212,17 @@ namespace Signorini
       void
       write_summary(Json &block) const override;
 
+      /// Both passes' states and the forces, in the first pass's layout.
       void
-      save_state(OutputArchive &archive) const override;
+      save_state(OutputArchive &archive, MeshState &mesh) const override;
       void
-      load_state(InputArchive &archive) override;
+      load_state(InputArchive &archive, MeshState &mesh) override;
+
+      std::vector<types::global_dof_index>
+      force_dofs() const override
+      {
+        return first.force_dofs();
+      }
 
     private:
       /// The second pass's forces (body 2's nodes, then body 1's) added

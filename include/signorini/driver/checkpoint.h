@@ -14,13 +14,20 @@ namespace Signorini
    * `signorini --restart DIR` can continue it (doc/robustness.md).
    *
    * A checkpoint is the folder DIR/checkpoints/checkpoint-NNNNNN with the
-   * mesh and the solution (p4est's save, mesh*), each rank's state
-   * (state-R.bin: load-step time and size, the report so far, the contact
-   * model's forces, the step solver's penalty or Ipopt multipliers, the
-   * output series) and the parameters it ran with (parameters.prm). It is
-   * written under a temporary name and renamed when complete; the newest
-   * 'Keep' checkpoints are kept. A checkpoint is always written when the
-   * run is interrupted by SIGINT or SIGTERM, whatever these settings say.
+   * mesh (p4est's save, mesh*) with, attached cell by cell, the solution,
+   * the state the Hessian's pattern was built at and the state that lives
+   * on nodes and cells (a MeshState: the contact model's nodal forces, the
+   * interior point method's multipliers on the contact nodes and on the
+   * incompressible cells); each rank's state file (state-R.bin: load-step
+   * time and size, the report so far, the parts' state that is the same
+   * on every rank (penalty, barrier, broad-phase counters, output series;
+   * Ipopt's multipliers, Ipopt running on one rank), then this rank's
+   * entries of the vectors and fields); and the parameters it ran with
+   * (parameters.prm). `signorini --restart` continues it on any number of
+   * ranks (Simulator::restore(), doc/robustness.md). It is written under
+   * a temporary name and renamed when complete; the newest 'Keep'
+   * checkpoints are kept. A checkpoint is always written when the run is
+   * interrupted by SIGINT or SIGTERM, whatever these settings say.
    */
   struct CheckpointParameters
   {
@@ -51,7 +58,7 @@ namespace Signorini
   namespace Checkpoint
   {
     /// Version of the checkpoint format (state files and their order).
-    constexpr unsigned int format_version = 6; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back; 6: AMG builds in the step record
+    constexpr unsigned int format_version = 7; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back; 6: AMG builds in the step record; 7: the state on nodes and cells as fields attached to the mesh (any number of ranks)
 
     /// What every state file starts with; read before anything is built.
     struct Header
@@ -63,24 +70,38 @@ namespace Signorini
       std::string  parameter_file; // as the original run named it
       std::string  parameters;     // the used parameters (ShortPRM text)
       /// The mesh is the one the parameters build (no refinement cycle
-      /// yet): the restarted run builds it the same way, which gives the
-      /// same cells in the same order, hence the same DoF numbering and
-      /// the same round-off; the vectors are then restored entry by entry.
-      /// Otherwise the mesh is loaded from the checkpoint (p4est) and the
-      /// vectors are transferred cell by cell.
+      /// yet): the restarted run builds it the same way. On as many ranks,
+      /// that gives the same cells in the same order, hence the same DoF
+      /// numbering and the same round-off, and the vectors are restored
+      /// entry by entry from each rank's state file; on another number of
+      /// ranks the vectors are copied cell by cell (by CellId) from the
+      /// checkpoint's mesh, loaded beside the built one. Otherwise the mesh
+      /// is loaded from the checkpoint (p4est, on any number of ranks) and
+      /// the vectors are transferred cell by cell with it.
       bool mesh_as_built = true;
       /// With 'Estimate from a coarser mesh' the mesh counts as built
       /// throughout: the restarted run coarsens it again, and, if this
       /// flag is set, refines it back (the same history, hence the same
       /// numbering).
       bool refined_back = false;
+      /// The fields of the parts' MeshState (nodal forces, multipliers) on
+      /// DoFs and on cells, attached to the mesh after the solution and
+      /// the pattern state.
+      unsigned int n_dof_fields  = 0;
+      unsigned int n_cell_fields = 0;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
         ar &format &dimension &n_ranks &sequence &parameter_file &parameters;
-        ar &mesh_as_built &refined_back;
+        // An older format's header reads as far as it goes, so that
+        // read_header() can name its format.
+        ar &mesh_as_built;
+        if (format >= 5)
+          ar &refined_back;
+        if (format >= 7)
+          ar &n_dof_fields &n_cell_fields;
       }
     };
 

@@ -141,7 +141,8 @@ namespace Signorini
       std::size_t  n_steps = 0, n_cycles = 0; // of report's, at this point
       VectorType   solution;             // locally owned
       VectorType   pattern;              // locally relevant
-      std::string  parts;                // this rank's model, solver, output
+      std::string  parts;                // model, solver, output: the same on every rank
+      MeshState    mesh_state;           // their state on nodes and cells
       std::map<std::string, unsigned long long> file_sizes; // appended files
     };
 

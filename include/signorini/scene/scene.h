@@ -45,29 +45,55 @@ namespace Signorini
      * cell belongs to an active body, every referenced boundary id
      * exists); InputError on bad input. With a @p mesh_file (a
      * checkpoint's, written by save()), the coarse mesh of @p parameters
-     * is refined as the saved one instead; call load_vectors() after
-     * setup_dofs().
+     * is refined as the saved one instead (on any number of ranks); call
+     * load_attached() after setup_dofs().
      */
     Scene(const Parameters::Scene &parameters,
           MPI_Comm                 comm,
           const std::string       &mesh_file = "");
 
     /**
-     * Write the mesh with the owned vectors @p solution and @p pattern
-     * (the state the Hessian's sparsity pattern was built at) attached,
-     * into @p mesh_file (collective).
+     * Write the mesh into @p mesh_file with, attached cell by cell, the
+     * locally owned vectors @p vectors (the solution and the state the
+     * Hessian's sparsity pattern was built at) and the fields of a
+     * MeshState: @p dof_fields (locally owned vectors on the DoFs) and
+     * @p cell_fields (one value per active cell, by active cell index),
+     * these on the cells where one of them is not zero. Collective.
      */
     void
-    save(const std::string &mesh_file,
-         const VectorType  &solution,
-         const VectorType  &pattern) const;
+    save(const std::string                         &mesh_file,
+         const std::vector<const VectorType *>     &vectors,
+         const std::vector<const VectorType *>     &dof_fields,
+         const std::vector<const Vector<double> *> &cell_fields) const;
+
+    /// The bytes of the fields that save() attaches to the cells, on all
+    /// ranks (collective).
+    unsigned long long
+    field_bytes(const std::vector<const VectorType *>     &dof_fields,
+                const std::vector<const Vector<double> *> &cell_fields) const;
 
     /**
-     * After the constructor from a mesh file and setup_dofs(): the saved
-     * solution and the Hessian's sparsity pattern of the saved state.
+     * What save() attached to @p mesh_file, after setup_dofs(): into
+     * @p vectors its @p n_vectors vectors, then its @p n_dof_fields fields
+     * on the DoFs (locally owned, on this scene's DoFs), into
+     * @p cell_fields its @p n_cell_fields fields on cells (valid on the
+     * locally owned cells). With @p loaded_here this mesh is the one the
+     * constructor loaded from @p mesh_file: the data comes with it, on any
+     * number of ranks. Otherwise this mesh was built from the parameters
+     * (the same cells as the saved mesh, on another partition when the
+     * number of ranks differs): the saved mesh is loaded beside it and
+     * the values are copied from its cells to the cells with the same
+     * CellId. Collective; std::runtime_error, on every rank, if the two
+     * meshes do not have the same cells.
      */
     void
-    load_vectors();
+    load_attached(const std::string           &mesh_file,
+                  const bool                   loaded_here,
+                  const unsigned int           n_vectors,
+                  const unsigned int           n_dof_fields,
+                  const unsigned int           n_cell_fields,
+                  std::vector<VectorType>     &vectors,
+                  std::vector<Vector<double>> &cell_fields);
 
     /**
      * Distribute the DoFs, build the constraints, (re)initialise the state
@@ -146,6 +172,31 @@ namespace Signorini
     double             size  = 0.; // diameter of the bounding box
 
   private:
+    /// The data save() attached, on the mesh of @p dofs just loaded: the
+    /// first @p n_vectors of @p vectors, then @p n_dof_fields fields, and
+    /// @p cell_fields (each sized already).
+    static void
+    unpack_attached(const DoFHandler<dim>       &dofs,
+                    const unsigned int           n_vectors,
+                    const unsigned int           n_dof_fields,
+                    std::vector<VectorType>     &vectors,
+                    std::vector<Vector<double>> &cell_fields);
+
+    /// Ghosted copies (locally relevant) of the locally owned @p owned.
+    std::vector<VectorType>
+    ghosted_copies(const std::vector<const VectorType *> &owned) const;
+
+    /// The values save() attaches to @p cell for the fields (@p fields
+    /// ghosted): its DoF values of every field, then its cell values;
+    /// empty where all are zero.
+    std::vector<double>
+    field_values(const typename Triangulation<dim>::cell_iterator &cell,
+                 const std::vector<VectorType>                    &fields,
+                 const std::vector<const Vector<double> *>        &cell_fields) const;
+
     Contact::Model<dim> *contact_model = nullptr;
+    /// What builds the coarse mesh again (load_attached()).
+    MeshParameters            mesh_parameters;
+    std::vector<BodyGeometry> geometries;
   };
 } // namespace Signorini

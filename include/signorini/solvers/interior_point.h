@@ -3,6 +3,7 @@
 #include <signorini/solvers/interior_point_parameters.h>
 
 #include <signorini/archive.h>
+#include <signorini/mesh_state.h>
 #include <signorini/contact/node_wise_constraints.h>
 #include <signorini/problem/objective.h>
 #include <signorini/solvers/linear_solver.h>
@@ -150,14 +151,25 @@ namespace Signorini
       return mu_last;
     }
 
-    /// The warm-start data (this rank's multipliers), for checkpoints;
-    /// load after setup() on the same mesh and partition.
+    /**
+     * The warm-start data, for checkpoints: the multipliers as a field on
+     * their nodes' first DoFs into @p mesh, whether they start the next
+     * solve, the last barrier and regularisation into @p archive (the
+     * same on every rank). The slacks are not kept: a warm start sets
+     * them from the constraints and these multipliers. Load after setup()
+     * on the restarted run's mesh, on any number of ranks.
+     */
     void
-    save_state(OutputArchive &archive) const;
+    save_state(OutputArchive &archive, MeshState &mesh) const;
     void
-    load_state(InputArchive &archive);
+    load_state(InputArchive &archive, MeshState &mesh);
 
   private:
+    /// The first DoF of each contact node: where z is kept in a
+    /// checkpoint.
+    std::vector<types::global_dof_index>
+    multiplier_dofs() const;
+
     // One call of minimize(), in named phases; it reads and keeps the
     // warm-start data below.
     friend class InteriorPointIteration<dim>;

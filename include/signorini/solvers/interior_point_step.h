@@ -38,13 +38,18 @@ namespace Signorini
       return "interior_point";
     }
 
-    /// The multipliers for the warm start.
+    /// The multipliers for the warm start: the contact constraints' on
+    /// their nodes, the incompressibility constraints' on their cells.
     void
-    save_state(OutputArchive &archive) const override;
+    save_state(OutputArchive &archive, MeshState &mesh) const override;
     void
-    load_state(InputArchive &archive) override;
+    load_state(InputArchive &archive, MeshState &mesh) override;
 
   private:
+    /// The active cell indices of the cells of y (and rho, volume).
+    std::vector<unsigned int>
+    incompressible_cells() const;
+
     InteriorPointMinimizer<dim> minimizer;
     // Incompressible bodies: one multiplier, weight and volume per
     // constrained cell of this rank (Incompressibility::cells() order).

@@ -39,11 +39,13 @@ namespace Signorini
     void
     add_quantities(std::vector<Quantity> &quantities) const override;
 
-    /// Ipopt's warm-start data and the derivative test's result.
+    /// Ipopt's warm-start data and the derivative test's result (Ipopt
+    /// runs on one rank only: the archive holds its node-wise
+    /// multipliers).
     void
-    save_state(OutputArchive &archive) const override;
+    save_state(OutputArchive &archive, MeshState &mesh) const override;
     void
-    load_state(InputArchive &archive) override;
+    load_state(InputArchive &archive, MeshState &mesh) override;
 
   private:
     std::unique_ptr<IpoptSolver<dim>> ipopt;

@@ -47,11 +47,12 @@ namespace Signorini
     write_contact_summary(Json &block) const override;
 
     /// The first mesh's and the last step's penalty, whether the
-    /// tolerance was met, and Ipopt's warm-start data.
+    /// tolerance was met, and Ipopt's warm-start data (Ipopt runs on one
+    /// rank only).
     void
-    save_state(OutputArchive &archive) const override;
+    save_state(OutputArchive &archive, MeshState &mesh) const override;
     void
-    load_state(InputArchive &archive) override;
+    load_state(InputArchive &archive, MeshState &mesh) override;
 
   private:
     /// Re-initialise the Hessian with the contact couplings at @p u.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <signorini/archive.h>
+#include <signorini/mesh_state.h>
 #include <signorini/output/json.h>
 #include <signorini/solvers/linear_solver.h>
 #include <signorini/solvers/newton.h>
@@ -105,19 +106,24 @@ namespace Signorini
 
     /**
      * Save what the solver carries from one load step to the next (the
-     * penalty of the last step, Ipopt's multipliers for its warm start)
-     * into a checkpoint; load_state() reads it back after setup() on the
-     * checkpoint's mesh. Nothing by default.
+     * penalty of the last step, Ipopt's or the interior point method's
+     * multipliers for its warm start) into a checkpoint: into @p archive
+     * what is the same on every rank (or what only a one-rank solver
+     * has), into @p mesh what lives on nodes or cells. load_state() reads
+     * it back after setup() on the restarted run's mesh. Nothing by
+     * default.
      */
     virtual void
-    save_state(OutputArchive &archive) const
+    save_state(OutputArchive &archive, MeshState &mesh) const
     {
       (void)archive;
+      (void)mesh;
     }
     virtual void
-    load_state(InputArchive &archive)
+    load_state(InputArchive &archive, MeshState &mesh)
     {
       (void)archive;
+      (void)mesh;
     }
 
   protected:
