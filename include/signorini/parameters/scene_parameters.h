@@ -3,8 +3,8 @@
 // Only the modules' parameter structs: no solver, contact model or output
 // class (doc/architecture.md, 'Headers').
 #include <signorini/contact/hertz.h>
-#include <signorini/driver/checkpoint.h>
 #include <signorini/output/postprocess_parameters.h>
+#include <signorini/parameters/checkpoint_parameters.h>
 #include <signorini/parameters/selection.h>
 #include <signorini/scene/boundary_conditions.h>
 #include <signorini/scene/mesh.h>
