@@ -573,6 +573,25 @@ namespace Signorini
         }
   }
 
+  namespace
+  {
+    /// Why @p folder's file system cannot take @p needed bytes ("" if it
+    /// can, or if its free space cannot be told).
+    std::string
+    space_shortfall(const std::string &folder, const double needed)
+    {
+      std::error_code ec;
+      const auto      space = std::filesystem::space(folder, ec);
+      if (ec || static_cast<double>(space.available) >= needed)
+        return "";
+      std::ostringstream text;
+      text << std::setprecision(3) << "its file system has "
+           << space.available / 1e6 << " MB free, the checkpoint needs about "
+           << needed / 1e6 << " MB";
+      return text.str();
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::checkpoint(const Timer &run_timer, const bool force)
@@ -663,16 +682,9 @@ namespace Signorini
                         16. * static_cast<double>(n_entries) +
                         2048. * (report.steps.size() + report.cycles.size()) +
                         used_parameters.size() + 65536. * report.n_ranks);
-              const auto space = std::filesystem::space(folder, ec);
-              if (!ec && static_cast<double>(space.available) < needed)
-                {
-                  std::ostringstream text;
-                  text << std::setprecision(3) << "its file system has "
-                       << space.available / 1e6 << " MB free, the checkpoint "
-                       << "needs about " << needed / 1e6 << " MB";
-                  error = text.str();
-                  std::filesystem::remove_all(folder, ec);
-                }
+              error = space_shortfall(folder, needed);
+              if (!error.empty())
+                std::filesystem::remove_all(folder, ec);
             }
         }
       collective_check(error, "create");
