@@ -249,7 +249,7 @@ namespace Signorini
             failed_iterate = solution;
             solution       = backup;
             if (problem->contact)
-              problem->contact->forces() = backup_forces;
+              problem->contact->set_contact_forces(backup_forces);
             ++cuts;
             ++report.step_cuts;
             since_cut = 0;

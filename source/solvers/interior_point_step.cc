@@ -133,7 +133,7 @@ namespace Signorini
     if (!stats.converged)
       return false;
     if (this->problem.contact)
-      this->problem.contact->forces() = minimizer.multipliers();
+      this->problem.contact->set_contact_forces(minimizer.multipliers());
     return true;
   }
 

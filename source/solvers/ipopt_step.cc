@@ -38,7 +38,7 @@ namespace Signorini
         return false;
       }
     if (this->problem.contact)
-      this->problem.contact->forces() = result.contact_forces;
+      this->problem.contact->set_contact_forces(result.contact_forces);
     TimerOutput::Scope scope(this->timer, "assembly");
     stats.evaluation = this->problem.energy->evaluate(scene.solution_ghosted,
                                                       time,

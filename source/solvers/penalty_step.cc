@@ -189,8 +189,8 @@ namespace Signorini
     record.stages           = result.stages;
     if (!result.converged)
       return false;
-    term.forces() = result.forces;
-    last_mu       = result.stages.back().mu;
+    term.set_contact_forces(result.forces);
+    last_mu = result.stages.back().mu;
     if (!result.tolerance_met)
       {
         tolerance_met = false;

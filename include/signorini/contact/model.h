@@ -155,18 +155,33 @@ namespace Signorini
         return nullptr;
       }
 
-      /// The nodal contact forces of the last converged solve. The output
-      /// functions below take the forces as an argument (these, or a
-      /// failed iterate's): one name per output.
-      std::vector<double> &
-      forces()
-      {
-        return nodal_forces;
-      }
+      /// The nodal contact forces of the last converged solve (read only:
+      /// they change through set_contact_forces()). The output functions
+      /// below take the forces as an argument (these, or a failed
+      /// iterate's): one name per output.
       const std::vector<double> &
       forces() const
       {
         return nodal_forces;
+      }
+
+      /**
+       * Take the nodal contact forces of a converged solve, in the layout
+       * of forces(): the interior point method's multipliers, Ipopt's
+       * (max(-lambda_k, 0)), the penalty continuation's record, or the
+       * record from before a load step that is cut. This is the one way
+       * forces enter a model from outside (setup() resets them and
+       * load_state() reads them from a checkpoint), and where a term that
+       * lags the normal force (friction) will take it.
+       */
+      void
+      set_contact_forces(std::vector<double> forces)
+      {
+        AssertThrow(forces.size() == nodal_forces.size(),
+                    ExcMessage("contact forces of " + std::to_string(forces.size()) +
+                               " entries for a model whose record has " +
+                               std::to_string(nodal_forces.size())));
+        nodal_forces = std::move(forces);
       }
 
       /// One contact node as the output sees it: the model's whole
