@@ -101,7 +101,7 @@ namespace Signorini
       const std::vector<typename Model<dim>::NodeSample> &samples,
       const std::function<double(const Point<dim> &)>    &reference_pressure) const
     {
-      Model<dim>::write_profile(file, u, forces, samples, reference_pressure);
+      ContactSamples<dim>::write_profile(file, u, forces, samples, reference_pressure);
       // Body 2's side beside it: NAME_target.csv.
       const auto dot = file.rfind(".csv");
       write_target_profile((dot == std::string::npos ? file : file.substr(0, dot)) +

@@ -136,7 +136,8 @@ namespace Signorini
         if (restart_folder.empty())
           contact->check_initial_state(scene->solution_ghosted);
         postprocessor->extra_fields = [this, contact](DataOut<dim> &data_out) {
-          contact->add_output_fields(data_out, scene->solution_ghosted, contact->forces());
+          contact->samples().add_output_fields(data_out, scene->solution_ghosted,
+                                                contact->forces());
         };
       }
     setup_seconds = Utilities::MPI::max(setup_timer.wall_time(), comm);

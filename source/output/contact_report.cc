@@ -13,7 +13,7 @@ namespace Signorini
     std::vector<Quantity> quantities;
     // The nodes' state once, for the summary, the Hertz samples and the
     // profile.
-    const auto samples = contact.node_samples(u, contact.forces());
+    const auto samples = contact.samples().node_samples(u, contact.forces());
     const auto summary = contact.summarize_state(u, samples);
     record.active_nodes           = summary.n_active;
     record.penetration_ratio      = summary.max_penetration_ratio;
@@ -25,7 +25,7 @@ namespace Signorini
     record.contact_area   = summary.area;
     std::vector<std::pair<Point<dim>, double>> pressure;
     if (hertz.active())
-      pressure = contact.gather_pressure(samples);
+      pressure = contact.samples().gather_pressure(samples);
 
     const char *axes = "xyz";
     for (unsigned int d = 0; d < dim; ++d)
@@ -78,7 +78,7 @@ namespace Signorini
           return hertz.pressure(hertz.distance(x));
         };
       }
-    contact.write_profile(profile_file, u, contact.forces(), samples, reference);
+    contact.samples().write_profile(profile_file, u, contact.forces(), samples, reference);
     return quantities;
   }
 

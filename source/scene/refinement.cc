@@ -454,7 +454,7 @@ namespace Signorini
       std::vector<bool>   zone;
       if (term)
         {
-          pressures = term->nodal_pressures(u, term->forces());
+          pressures = term->samples().nodal_pressures(u, term->forces());
           if (parameters.uniform_zone)
             zone = contact_zone(dof_handler,
                                 term->contact_nodes_on_boundary(),

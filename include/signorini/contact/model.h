@@ -1,10 +1,10 @@
 #pragma once
 
-#include <signorini/archive.h>
 #include <signorini/contact/boundary_nodes.h>
+#include <signorini/contact/contact_state.h>
 #include <signorini/contact/node_wise_constraints.h>
 #include <signorini/contact/penalty.h>
-#include <signorini/mesh_state.h>
+#include <signorini/contact/samples.h>
 #include <signorini/output/json.h>
 #include <signorini/types.h>
 
@@ -14,7 +14,6 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <functional>
 #include <optional>
@@ -30,29 +29,35 @@ namespace Signorini
     /**
      * A contact model: everything the driver, the step solvers and the
      * output need of one, so that none of them names a concrete model.
+     * Most of it is in four roles, each an interface of its own, so that
+     * a caller that needs one role sees only that one:
      *
-     * - Enforcement, in two roles that the solvers see separately: the
-     *   penalty term mu P(U) of PenaltyTerm (every model) with its line
-     *   search safeguards, and, for models that have them, the node-wise
-     *   inequality constraints g_k(U) >= 0 of NodeWiseConstraints
-     *   (node_wise_constraints(): what Ipopt and the interior point
-     *   method take).
-     * - Geometry: its nodes on Gamma_C, their mesh sizes, the couplings it
-     *   adds to the Hessian's sparsity pattern and the distance that the
-     *   band refinement of the potential contact zone uses.
-     * - State: the nodal contact forces of the last solve, owned here (their
-     *   layout is the model's: one number per node for a rigid foundation,
-     *   dim for two bodies). The model turns a state and forces into one
-     *   NodeSample per node (position, gaps, pressure, force, weight); the
-     *   pressures, the active set, the resultants, the area, the profile
-     *   CSV and the VTU fields are all computed here from those samples.
-     *   The model adds its own entries to summary.json's contact block.
+     * - the energy term mu P(U) with its line search safeguards
+     *   (PenaltyTerm, contact/penalty.h; inherited): what the penalty
+     *   continuation takes;
+     * - for models that have them, the node-wise inequality constraints
+     *   g_k(U) >= 0 (NodeWiseConstraints, node_wise_constraints()): what
+     *   Ipopt and the interior point method take;
+     * - the samples for output (ContactSamples, contact/samples.h,
+     *   samples()): one NodeSample per node (position, gaps, pressure,
+     *   force, weight), from which the pressures, the active set, the
+     *   resultants, the area, the profile CSV and the VTU fields come;
+     * - the state carried from one load step to the next (ContactState,
+     *   contact/contact_state.h; inherited): the nodal contact forces of
+     *   the last solve, which solvers hand over with set_contact_forces(),
+     *   and the checkpoint.
+     *
+     * Model itself adds the geometry (its nodes' count and mesh sizes,
+     * the couplings it adds to the Hessian's sparsity pattern, the
+     * distance that the band refinement of the potential contact zone
+     * uses), the first penalty factor, the summary of a state and its
+     * entries in summary.json's contact block.
      *
      * A new model is a class derived from this one plus one registration
      * line (contact/registry.h, doc/architecture.md).
      */
     template <int dim>
-    class Model : public PenaltyTerm<dim>
+    class Model : public PenaltyTerm<dim>, public ContactState
     {
     public:
       /// The contact state of a solution, for the step record.
@@ -155,56 +160,12 @@ namespace Signorini
         return nullptr;
       }
 
-      /// The nodal contact forces of the last converged solve (read only:
-      /// they change through set_contact_forces()). The output functions
-      /// below take the forces as an argument (these, or a failed
-      /// iterate's): one name per output.
-      const std::vector<double> &
-      forces() const
-      {
-        return nodal_forces;
-      }
+      /// The output role: the model's nodes as samples (a model made of
+      /// parts hands out the part that owns its nodes).
+      virtual const ContactSamples<dim> &
+      samples() const = 0;
 
-      /**
-       * Take the nodal contact forces of a converged solve, in the layout
-       * of forces(): the interior point method's multipliers, Ipopt's
-       * (max(-lambda_k, 0)), the penalty continuation's record, or the
-       * record from before a load step that is cut. This is the one way
-       * forces enter a model from outside (setup() resets them and
-       * load_state() reads them from a checkpoint), and where a term that
-       * lags the normal force (friction) will take it.
-       */
-      void
-      set_contact_forces(std::vector<double> forces)
-      {
-        AssertThrow(forces.size() == nodal_forces.size(),
-                    ExcMessage("contact forces of " + std::to_string(forces.size()) +
-                               " entries for a model whose record has " +
-                               std::to_string(nodal_forces.size())));
-        nodal_forces = std::move(forces);
-      }
-
-      /// One contact node as the output sees it: the model's whole
-      /// contribution to the profile, the VTU fields, the pressures, the
-      /// active set, the resultants and the summary block.
-      struct NodeSample
-      {
-        Point<dim>          X, x;   // reference and current position
-        std::vector<double> gaps;   // the model's gap measures (profile_gaps())
-        double              pressure = 0.;
-        Tensor<1, dim>      force;  // the nodal contact force
-        double              weight = 0.; // tributary length or area
-      };
-
-      /// This rank's contact nodes for the nodal @p forces at the ghosted
-      /// state @p u, in the order of contact_nodes_on_boundary().
-      virtual std::vector<NodeSample>
-      node_samples(const VectorType &u, const std::vector<double> &forces) const = 0;
-
-      /// The names of NodeSample::gaps, comma-separated (profile columns;
-      /// the first one is also the VTU field contact_NAME).
-      virtual std::string
-      profile_gaps() const = 0;
+      using NodeSample = typename ContactSamples<dim>::NodeSample;
 
       /**
        * Largest penetration over the local mesh size at the ghosted state
@@ -224,8 +185,8 @@ namespace Signorini
       /**
        * Active set, penetration, total force, moment, area and largest
        * pressure of the ghosted state @p u, from its @p samples
-       * (node_samples() at @p u; collective). A node is active when its
-       * pressure exceeds 1e-6 of the largest on any rank.
+       * (samples().node_samples() at @p u; collective). A node is active
+       * when its pressure exceeds 1e-6 of the largest on any rank.
        */
       StateSummary
       summarize_state(const VectorType &u, const std::vector<NodeSample> &samples) const;
@@ -235,52 +196,9 @@ namespace Signorini
       unsigned int
       n_active(const VectorType &u, const std::vector<double> &forces) const;
 
-      /// (current position, pressure) of the active nodes of @p samples
-      /// (node_samples()), on every rank, sorted by position (collective).
-      std::vector<std::pair<Point<dim>, double>>
-      gather_pressure(const std::vector<NodeSample> &samples) const;
-
-      /// The profile along Gamma_C as CSV (rank 0 writes; collective): one
-      /// row per entry of @p samples (node_samples() at @p u for the nodal
-      /// @p forces), with a reference pressure where @p reference is
-      /// given. A model may write more beside it (two bodies: body 2's
-      /// side, from @p u and @p forces).
-      virtual void
-      write_profile(const std::string                               &file,
-                    const VectorType                                &u,
-                    const std::vector<double>                       &forces,
-                    const std::vector<NodeSample>                   &samples,
-                    const std::function<double(const Point<dim> &)> &reference) const;
-
-      /// The nodal fields contact_pressure, contact_GAP (the first of
-      /// profile_gaps()) and contact_active for the nodal @p forces; the
-      /// vectors live with the contact nodes until the next call.
-      void
-      add_output_fields(DataOut<dim>              &data_out,
-                        const VectorType          &u,
-                        const std::vector<double> &forces) const;
-
       /// The model's part of summary.json's "contact" block.
       virtual void
       write_summary(Json &block) const = 0;
-
-      /**
-       * Save what the model carries from one load step to the next into a
-       * checkpoint: the nodal forces as a field on their DoFs into
-       * @p mesh (force_dofs()), and what a model adds (into @p archive
-       * only what is the same on every rank). load_state() reads it back
-       * after the DoFs of the restarted run's mesh are set up, on any
-       * number of ranks.
-       */
-      virtual void
-      save_state(OutputArchive &archive, MeshState &mesh) const;
-      virtual void
-      load_state(InputArchive &archive, MeshState &mesh);
-
-      /// The DoF each entry of the nodal forces belongs to (this rank's
-      /// nodes): the force's component on that node.
-      virtual std::vector<types::global_dof_index>
-      force_dofs() const = 0;
 
     protected:
       /// The block's entries every model has: type, boundary id, what the
@@ -297,8 +215,6 @@ namespace Signorini
         block["mean mesh size"] = mean_mesh_size();
         block["min mesh size"]  = min_mesh_size();
       }
-
-      std::vector<double> nodal_forces;
     };
   } // namespace Contact
 } // namespace Signorini

@@ -75,11 +75,6 @@ namespace Signorini
       virtual const BoundaryNodes<dim> &
       contact_nodes_on_boundary() const = 0;
 
-      /// The contact pressure at each node of contact_nodes_on_boundary()
-      /// for the state @p u with nodal @p forces (local).
-      virtual std::vector<double>
-      nodal_pressures(const VectorType &u, const std::vector<double> &forces) const = 0;
-
       /// Whether the state @p u is one the model can represent (collective).
       virtual bool
       admissible(const VectorType &u) const

@@ -47,7 +47,9 @@ namespace Signorini
      * active set, total force, the CSV profile and the Hertz quantities.
      */
     template <int dim>
-    class RigidFoundation : public Model<dim>, public NodeWiseConstraints<dim>
+    class RigidFoundation : public Model<dim>,
+                            public NodeWiseConstraints<dim>,
+                            public ContactSamples<dim>
     {
     public:
       using Node = BoundaryNode<dim>;
@@ -221,6 +223,12 @@ namespace Signorini
         for (unsigned int k = 0; k < p.size(); ++k)
           p[k] = pressure(contact_nodes()[k], evaluate(contact_nodes()[k], u), forces[k]);
         return p;
+      }
+
+      const ContactSamples<dim> &
+      samples() const override
+      {
+        return *this;
       }
 
       /// The profile's nodes: gaps are the signed distance g/|grad g|

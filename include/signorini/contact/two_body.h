@@ -81,7 +81,7 @@ namespace Signorini
      * its force over its tributary weight.
      */
     template <int dim>
-    class TwoBodyContact : public Model<dim>
+    class TwoBodyContact : public Model<dim>, public ContactSamples<dim>
     {
     public:
       /// What the broad phase did, for summary.json.
@@ -324,6 +324,12 @@ namespace Signorini
         return stats;
       }
 
+      const ContactSamples<dim> &
+      samples() const override
+      {
+        return *this;
+      }
+
       /// The profile's nodes: the one gap is the penetration depth into
       /// body 2 (>= 0).
       std::vector<typename Model<dim>::NodeSample>
@@ -335,7 +341,8 @@ namespace Signorini
         return "penetration";
       }
 
-      /// Model's profile, and body 2's side beside it (NAME_target.csv).
+      /// ContactSamples' profile, and body 2's side beside it
+      /// (NAME_target.csv).
       void
       write_profile(const std::string                                    &file,
                     const VectorType                                     &u,

@@ -142,12 +142,6 @@ namespace Signorini
         return first.contact_nodes_on_boundary();
       }
 
-      std::vector<double>
-      nodal_pressures(const VectorType &u, const std::vector<double> &forces) const override
-      {
-        return first.nodal_pressures(u, forces);
-      }
-
       bool
       admissible(const VectorType &u) const override
       {
@@ -170,16 +164,12 @@ namespace Signorini
         return std::min(first.max_step(u, d), second.max_step(u, d));
       }
 
-      std::vector<typename Model<dim>::NodeSample>
-      node_samples(const VectorType &u, const std::vector<double> &forces) const override
+      /// The first pass's nodes: body 1's, then body 2's, as in the force
+      /// record (the output counts both passes through the record).
+      const ContactSamples<dim> &
+      samples() const override
       {
-        return first.node_samples(u, forces);
-      }
-
-      std::string
-      profile_gaps() const override
-      {
-        return first.profile_gaps();
+        return first;
       }
 
       /// Body 1's nodes in body 2, body 2's nodes in body 1, the larger.
@@ -195,16 +185,6 @@ namespace Signorini
       evaluated_pairs() const override
       {
         return *first.evaluated_pairs() + *second.evaluated_pairs();
-      }
-
-      void
-      write_profile(const std::string                                  &file,
-                    const VectorType                                   &u,
-                    const std::vector<double>                          &forces,
-                    const std::vector<typename Model<dim>::NodeSample> &samples,
-                    const std::function<double(const Point<dim> &)> &reference) const override
-      {
-        first.write_profile(file, u, forces, samples, reference);
       }
 
       /// The first pass's block, "passes": 2 and the second pass's broad
