@@ -164,8 +164,9 @@ namespace Signorini
         return std::min(first.max_step(u, d), second.max_step(u, d));
       }
 
-      /// The first pass's nodes: body 1's, then body 2's, as in the force
-      /// record (the output counts both passes through the record).
+      /// The first pass's samples: body 1's nodes on Gamma_C (and body 2's
+      /// side in the profile), for forces in the first pass's layout, which
+      /// is this model's record (it sums both passes).
       const ContactSamples<dim> &
       samples() const override
       {
