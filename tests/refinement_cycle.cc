@@ -150,7 +150,12 @@ main()
   out << "3D run converged: " << verdict(ran3d) << "\n"
       << "3D: hanging nodes on the contact boundary: " << verdict(hanging > 0) << "\n"
       << "3D: weights add up to the bottom's area: "
-      << verdict(!bottom.empty() && std::abs(area - 1.) < 1e-10) << "\n"
+      // contact_profile.csv carries 10 significant digits: the sum of its
+      // N weights (75 here) is off by up to N x 5e-11 of the largest.
+      // Which cells the cycles refine follows Kelly's round-off indicator:
+      // with DEAL_II_NUM_THREADS=1 the weights summed to 1 + 1.1e-10,
+      // beyond the 1e-10 this checked before.
+      << verdict(!bottom.empty() && std::abs(area - 1.) < 1e-8) << "\n"
       << "3D: pressure 0.876 at every contact node to 1e-6: "
       << verdict(!bottom.empty() && worst < 1e-6 * 0.876) << "\n";
   std::cerr << "3D: " << hanging << " hanging nodes, area " << area

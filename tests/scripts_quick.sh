@@ -81,7 +81,7 @@ expect estimates/hertz_adaptive/summary.json estimates/hertz_block/summary.json 
 run fault_drill 0 python3 "$b/fault_drill.py" --build "$build" \
   --scene "$src/prm/ironing.prm" --interrupts 4 --output drill
 expect drill/fault_drill.json drill/reference/run/reactions.csv
-expect_text fault_drill.log "identical to the run without a stop: yes"
+expect_text fault_drill.log "the same as the run without a stop: yes"
 
 run hard_cases 0 python3 "$b/hard_cases.py" --quick --build "$build" --out hard
 expect hard/ssnv187_corner_ipopt/summary.json hard/stiff_on_soft_block_newton-penalty/summary.json

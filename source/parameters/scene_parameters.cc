@@ -294,6 +294,9 @@ namespace Signorini
       prm.enter_subsection("Hertz reference");
       Signorini::Contact::HertzReference::declare_parameters(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Friction");
+      Signorini::Contact::FrictionParameters::declare_parameters(prm);
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -319,7 +322,15 @@ namespace Signorini
       prm.enter_subsection("Hertz reference");
       hertz.parse_parameters(prm);
       prm.leave_subsection();
+      prm.enter_subsection("Friction");
+      friction.parse_parameters(prm);
       prm.leave_subsection();
+      prm.leave_subsection();
+      if (friction.active())
+        throw InputError("Contact > Friction > Coefficient",
+                         "Coulomb friction is not available yet: its law is "
+                         "in (doc/friction.md), but no contact model or "
+                         "solver uses it; set 0 (frictionless)");
     }
 
     void

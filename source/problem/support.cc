@@ -28,23 +28,30 @@ namespace Signorini
                 const double                 end_time)
   {
     const unsigned int n_bodies = scene.material_ids.size();
-    // free[b * dim + d]: no Dirichlet condition on body b's component d.
+    // Calls f(k, dof) for every DoF of this rank's cells, with k = b * dim
+    // + d for the DoF's body b and component d.
+    const auto for_each_dof = [&](const auto &f) {
+      std::vector<types::global_dof_index> dofs(scene.fe->n_dofs_per_cell());
+      for (const auto &cell : scene.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            unsigned int b = 0;
+            while (b < n_bodies && scene.material_ids[b] != cell->material_id())
+              ++b;
+            if (b == n_bodies)
+              continue;
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              f(b * dim + scene.fe->system_to_component_index(i).first, dofs[i]);
+          }
+    };
+    // fixed[b * dim + d]: a Dirichlet condition on body b's component d.
     std::vector<int> fixed(n_bodies * dim, 0);
-    std::vector<types::global_dof_index> dofs(scene.fe->n_dofs_per_cell());
-    for (const auto &cell : scene.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          unsigned int b = 0;
-          while (b < n_bodies && scene.material_ids[b] != cell->material_id())
-            ++b;
-          if (b == n_bodies)
-            continue;
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (scene.homogeneous_constraints.is_constrained(dofs[i]) &&
-                !scene.hanging_constraints.is_constrained(dofs[i]))
-              fixed[b * dim + scene.fe->system_to_component_index(i).first] = 1;
-        }
+    for_each_dof([&](const unsigned int k, const types::global_dof_index dof) {
+      if (scene.homogeneous_constraints.is_constrained(dof) &&
+          !scene.hanging_constraints.is_constrained(dof))
+        fixed[k] = 1;
+    });
     {
       const std::vector<int> mine = fixed;
       Utilities::MPI::max(make_array_view(mine), scene.comm, make_array_view(fixed));
@@ -80,27 +87,16 @@ namespace Signorini
     energy.evaluate(zero, end_time, scene.hanging_constraints, &load, nullptr);
     std::vector<double> net(n_bodies * dim, 0.);
     std::vector<bool>   counted(scene.locally_owned.n_elements(), false);
-    for (const auto &cell : scene.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    for_each_dof([&](const unsigned int k, const types::global_dof_index dof) {
+      if (!scene.locally_owned.is_element(dof))
+        return;
+      const auto index = scene.locally_owned.index_within_set(dof);
+      if (!counted[index])
         {
-          unsigned int b = 0;
-          while (b < n_bodies && scene.material_ids[b] != cell->material_id())
-            ++b;
-          if (b == n_bodies)
-            continue;
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (scene.locally_owned.is_element(dofs[i]))
-              {
-                const auto k = scene.locally_owned.index_within_set(dofs[i]);
-                if (!counted[k])
-                  {
-                    counted[k] = true;
-                    net[b * dim + scene.fe->system_to_component_index(i).first] +=
-                      load[dofs[i]];
-                  }
-              }
+          counted[index] = true;
+          net[k] += load[dof];
         }
+    });
     {
       const std::vector<double> mine = net;
       Utilities::MPI::sum(make_array_view(mine), scene.comm, make_array_view(net));

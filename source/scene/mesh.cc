@@ -38,6 +38,16 @@ namespace Signorini
       return s.str();
     }
 
+    /// The first @p dim entries of @p x, comma-separated.
+    std::string
+    format_point(const std::vector<double> &x, const unsigned int dim)
+    {
+      std::string text;
+      for (unsigned int d = 0; d < dim && d < x.size(); ++d)
+        text += (d > 0 ? ", " : "") + format_count(x[d]);
+      return text;
+    }
+
     // The lengths a mesh can hold: a cell refined 30 times from a body of
     // size in [1e-30, 1e30] keeps its Jacobian and the normal equations of
     // its mapping (products of up to six lengths in 3D) within double's
@@ -430,7 +440,8 @@ namespace Signorini
         check_size(upper_corner[d] - lower_corner[d],
                    std::max(std::abs(lower_corner[d]), std::abs(upper_corner[d])),
                    context + " > Upper corner",
-                   prm.get("Lower corner") + "' to '" + prm.get("Upper corner"));
+                   format_point(lower_corner, dim) + "' to '" +
+                     format_point(upper_corner, dim));
     else
       {
         double place = 0.;

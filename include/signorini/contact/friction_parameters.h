@@ -4,13 +4,11 @@
 // parameters (parameters/scene_parameters.h) can include it without the
 // friction law or a contact model.
 //
-// Not yet entered into the scene: the next step of issue 50 declares it
-// as the subsection "Contact > Friction" from
-// Parameters::ContactSection::declare_parameters and parse_parameters
-// (source/parameters/scene_parameters.cc, inside the "Contact"
-// subsection, beside the model's own subsections) and keeps it as a
-// member of Parameters::ContactSection; the solver compatibility check
-// then refuses friction with a solver that cannot do it.
+// Entered into the scene as "Contact > Friction"
+// (Parameters::ContactSection): read and checked; a coefficient > 0 is
+// refused with exit 2 until a contact model uses the law (issue 50's next
+// step); then the solver compatibility check refuses friction with a
+// solver that cannot do it.
 
 #include <deal.II/base/parameter_handler.h>
 

@@ -2,6 +2,7 @@
 
 // Only the modules' parameter structs: no solver, contact model or output
 // class (doc/architecture.md, 'Headers').
+#include <signorini/contact/friction_parameters.h>
 #include <signorini/contact/hertz.h>
 #include <signorini/output/postprocess_parameters.h>
 #include <signorini/parameters/checkpoint_parameters.h>
@@ -147,6 +148,9 @@ namespace Signorini
       std::shared_ptr<const Signorini::Contact::ModelParameters> model_parameters;
       types::boundary_id                   boundary_id = 0;
       Signorini::Contact::HertzReference   hertz;
+      /// "Contact > Friction" (issue 50: read and checked; a coefficient
+      /// > 0 is refused until a contact model uses the law).
+      Signorini::Contact::FrictionParameters friction;
 
       /// Whether the scene declares contact.
       bool
