@@ -87,6 +87,52 @@ namespace Signorini
     mapping = std::make_unique<MappingQCache<dim>>(p.discretization.mapping_degree);
   }
 
+  namespace
+  {
+    /// One cell's values as save() attaches them: the DoF values of each
+    /// of @p dof_vectors (ghosted) on @p cell, then its value in each of
+    /// @p cell_fields (by active cell index).
+    template <int dim>
+    std::vector<double>
+    cell_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                const std::vector<VectorType>                        &dof_vectors,
+                const std::vector<const Vector<double> *>            &cell_fields)
+    {
+      std::vector<double> values;
+      Vector<double>      local(cell->get_fe().n_dofs_per_cell());
+      for (const auto &v : dof_vectors)
+        {
+          cell->get_dof_values(v, local);
+          values.insert(values.end(), local.begin(), local.end());
+        }
+      for (const auto *c : cell_fields)
+        values.push_back((*c)[cell->active_cell_index()]);
+      return values;
+    }
+
+    /// The inverse of cell_values(): @p values (as it lays them out) into
+    /// the @p n_dof_vectors vectors from @p first_vector on, and into
+    /// @p cell_fields.
+    template <int dim>
+    void
+    set_cell_values(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const double                                         *values,
+                    const std::vector<VectorType>::iterator               first_vector,
+                    const unsigned int                                    n_dof_vectors,
+                    std::vector<Vector<double>>                          &cell_fields)
+    {
+      const unsigned int per_cell = cell->get_fe().n_dofs_per_cell();
+      Vector<double>     local(per_cell);
+      for (unsigned int v = 0; v < n_dof_vectors; ++v)
+        {
+          std::copy(values + v * per_cell, values + (v + 1) * per_cell, local.begin());
+          cell->set_dof_values(local, *(first_vector + v));
+        }
+      for (unsigned int c = 0; c < cell_fields.size(); ++c)
+        cell_fields[c][cell->active_cell_index()] = values[n_dof_vectors * per_cell + c];
+    }
+  } // namespace
+
   template <int dim>
   void
   Scene<dim>::save(const std::string                         &mesh_file,
@@ -147,15 +193,7 @@ namespace Signorini
                                                                   cell->level(),
                                                                   cell->index(),
                                                                   &dof_handler);
-    std::vector<double> values;
-    Vector<double>      local(fe->n_dofs_per_cell());
-    for (const auto &f : fields)
-      {
-        dof_cell->get_dof_values(f, local);
-        values.insert(values.end(), local.begin(), local.end());
-      }
-    for (const auto *c : cell_fields)
-      values.push_back((*c)[cell->active_cell_index()]);
+    std::vector<double> values = cell_values<dim>(dof_cell, fields, cell_fields);
     if (std::none_of(values.begin(), values.end(), [](const double x) { return x != 0.; }))
       values.clear();
     return values;
@@ -223,16 +261,8 @@ namespace Signorini
                                                                       cell->level(),
                                                                       cell->index(),
                                                                       &dofs);
-        Vector<double> local(per_cell);
-        for (unsigned int f = 0; f < n_dof_fields; ++f)
-          {
-            std::copy(values.begin() + f * per_cell,
-                      values.begin() + (f + 1) * per_cell,
-                      local.begin());
-            dof_cell->set_dof_values(local, vectors[n_vectors + f]);
-          }
-        for (unsigned int c = 0; c < cell_fields.size(); ++c)
-          cell_fields[c][cell->active_cell_index()] = values[n_dof_fields * per_cell + c];
+        set_cell_values<dim>(dof_cell, values.data(), vectors.begin() + n_vectors,
+                             n_dof_fields, cell_fields);
       });
     for (unsigned int f = 0; f < n_dof_fields; ++f)
       vectors[n_vectors + f].compress(VectorOperation::insert);
@@ -312,35 +342,21 @@ namespace Signorini
     // CellId: in one piece where that cell is locally owned here too (p4est
     // partitions both meshes the same way, so that is every cell), the
     // others from the rank that owns them.
-    const unsigned int per_cell = fe->n_dofs_per_cell();
-    // One cell's values: every vector's DoF values, then the cell values.
-    auto cell_values = [&](const typename Triangulation<dim>::cell_iterator &source) {
+    std::vector<const Vector<double> *> saved_cell_fields;
+    for (const auto &c : saved_cells)
+      saved_cell_fields.push_back(&c);
+    // One saved cell's values: every vector's DoF values, then the cell
+    // values (laid out as save() attaches them).
+    auto values_of = [&](const typename Triangulation<dim>::cell_iterator &source) {
       const typename DoFHandler<dim>::active_cell_iterator dof_cell(&saved,
                                                                     source->level(),
                                                                     source->index(),
                                                                     &saved_dofs);
-      std::vector<double> all;
-      Vector<double>      local(per_cell);
-      for (unsigned int v = 0; v < n_all; ++v)
-        {
-          dof_cell->get_dof_values(values[v], local);
-          all.insert(all.end(), local.begin(), local.end());
-        }
-      for (unsigned int c = 0; c < n_cell_fields; ++c)
-        all.push_back(saved_cells[c][source->active_cell_index()]);
-      return all;
+      return cell_values<dim>(dof_cell, values, saved_cell_fields);
     };
     auto set_cell = [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
                         const std::vector<double>                            &all) {
-      Vector<double> local(per_cell);
-      for (unsigned int v = 0; v < n_all; ++v)
-        {
-          std::copy(all.begin() + v * per_cell, all.begin() + (v + 1) * per_cell,
-                    local.begin());
-          cell->set_dof_values(local, vectors[v]);
-        }
-      for (unsigned int c = 0; c < n_cell_fields; ++c)
-        cell_vectors[c][cell->active_cell_index()] = all[n_all * per_cell + c];
+      set_cell_values<dim>(cell, all.data(), vectors.begin(), n_all, cell_vectors);
     };
     std::map<std::string, typename DoFHandler<dim>::active_cell_iterator> missing;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -348,7 +364,7 @@ namespace Signorini
         {
           const auto source = find_active_cell(saved, cell->id());
           if (source != saved.end() && source->is_locally_owned())
-            set_cell(cell, cell_values(source));
+            set_cell(cell, values_of(source));
           else
             missing[cell->id().to_string()] = cell;
         }
@@ -363,7 +379,7 @@ namespace Signorini
             {
               const auto source = find_active_cell(saved, CellId(id));
               if (source != saved.end() && source->is_locally_owned())
-                answers.emplace_back(id, cell_values(source));
+                answers.emplace_back(id, values_of(source));
             }
         for (const auto &list : Utilities::MPI::all_gather(comm, answers))
           for (const auto &[id, all] : list)
