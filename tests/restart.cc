@@ -206,7 +206,8 @@ main()
                                         " --restart " + checkpoint(old_format, 0) +
                                         " 2>&1");
     out << "format 6: exit code " << old.first << ", names the format: "
-        << verdict(old.second.find("checkpoint format 6, this program reads format 7") !=
+        << verdict(old.second.find("checkpoint format 6, this program reads format " +
+                                     std::to_string(Signorini::Checkpoint::format_version)) !=
                    std::string::npos)
         << "\n";
     std::filesystem::create_directories("empty");

@@ -130,7 +130,8 @@ namespace Signorini
         throw;
       }
     load_steps = std::make_unique<LoadStepTable>(
-      report.output_directory, Utilities::MPI::this_mpi_process(comm) == 0);
+      report.output_directory, Utilities::MPI::this_mpi_process(comm) == 0,
+      parameters.contact.friction.active());
     if (contact)
       {
         if (restart_folder.empty())
@@ -193,6 +194,12 @@ namespace Signorini
                                 record,
                                 report.output_directory + "/contact_profile.csv"))
           report.quantities.push_back(q);
+      if (problem->friction)
+        for (const auto &q : friction_quantities(
+               *problem->friction, u,
+               report.steps.empty() ? 0. : report.steps.back().total_dissipated_energy,
+               comm, record))
+          report.quantities.push_back(q);
       solver->add_quantities(report.quantities);
     }
     report.steps.push_back(record);
@@ -245,7 +252,7 @@ namespace Signorini
         std::vector<double>         backup_forces;
         if (problem->contact)
           backup_forces = problem->contact->forces();
-        if (!solver->solve(t_new, stats, record))
+        if (!solver->solve_step(t_new, stats, record))
           {
             failed_iterate = solution;
             solution       = backup;
@@ -445,7 +452,7 @@ namespace Signorini
         pcout << std::endl;
         StepStatistics              stats;
         Report::Step                record{};
-        if (!solver->solve(end_time, stats, record))
+        if (!solver->solve_step(end_time, stats, record))
           {
             // The previous mesh's solution is the last one on disk.
             std::ostringstream msg;

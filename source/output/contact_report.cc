@@ -82,6 +82,52 @@ namespace Signorini
     return quantities;
   }
 
+  template <int dim>
+  std::vector<Quantity>
+  friction_quantities(const Contact::FrictionTerm<dim> &friction,
+                      const VectorType                 &u,
+                      const double                      previous_total,
+                      const MPI_Comm                    comm,
+                      Report::Step                     &record)
+  {
+    const auto totals = friction.totals(u, comm);
+    for (unsigned int d = 0; d < dim; ++d)
+      record.friction_force[d] = totals.force[d];
+    record.dissipated_energy       = totals.dissipation;
+    record.total_dissipated_energy = previous_total + totals.dissipation;
+    record.stick_points            = totals.n_stick;
+    record.slip_points             = totals.n_slip;
+    std::vector<Quantity> quantities;
+    const char           *axes = "xyz";
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Quantity q;
+        q.name  = std::string("friction_force_") + axes[d];
+        q.value = totals.force[d];
+        quantities.push_back(q);
+      }
+    Quantity dissipated;
+    dissipated.name  = "dissipated_energy";
+    dissipated.value = record.total_dissipated_energy;
+    quantities.push_back(dissipated);
+    Quantity stick;
+    stick.name  = "stick_points";
+    stick.value = totals.n_stick;
+    quantities.push_back(stick);
+    Quantity slip;
+    slip.name  = "slip_points";
+    slip.value = totals.n_slip;
+    quantities.push_back(slip);
+    return quantities;
+  }
+
+  template std::vector<Quantity>
+  friction_quantities<2>(const Contact::FrictionTerm<2> &, const VectorType &, double,
+                         MPI_Comm, Report::Step &);
+  template std::vector<Quantity>
+  friction_quantities<3>(const Contact::FrictionTerm<3> &, const VectorType &, double,
+                         MPI_Comm, Report::Step &);
+
   template std::vector<Quantity>
   contact_quantities<2>(const Contact::Model<2> &, const Contact::HertzReference &,
                         const VectorType &, Report::Step &, const std::string &);

@@ -116,6 +116,20 @@ namespace Signorini
           c["resultant moment"] = moment;
           c["moment about"]     = "origin";
         }
+      step_solver.write_friction_summary(c);
+      if (!report.steps.empty() && report.steps.back().friction_iterations > 0)
+        {
+          const Report::Step &last = report.steps.back();
+          Json               &f    = c["friction"];
+          Json                force = Json::array();
+          for (unsigned int d = 0; d < dim; ++d)
+            force.push_back(last.friction_force[d]);
+          f["friction force"]           = force;
+          f["dissipated energy"]        = last.total_dissipated_energy;
+          f["stick points"]             = last.stick_points;
+          f["slip points"]              = last.slip_points;
+          f["outer iterations, last step"] = last.friction_iterations;
+        }
     }
 
     /// One object per load step (@p iterations: the name of its
@@ -166,6 +180,12 @@ namespace Signorini
               o["contact area"]           = s.contact_area;
               if (s.has_pairs)
                 o["evaluated pairs"] = s.pairs;
+              if (s.friction_iterations > 0)
+                {
+                  o["friction iterations"] = s.friction_iterations;
+                  o["friction force"]      = s.friction_force[0];
+                  o["dissipated energy"]   = s.dissipated_energy;
+                }
             }
           steps.push_back(o);
         }
@@ -357,9 +377,12 @@ namespace Signorini
         std::cerr << "signorini: warning: " << reason << std::endl;
   }
 
-  LoadStepTable::LoadStepTable(const std::string &output_directory, const bool writer)
+  LoadStepTable::LoadStepTable(const std::string &output_directory,
+                               const bool         writer,
+                               const bool         friction)
     : file(output_directory + "/load_steps.csv")
     , writer(writer)
+    , friction(friction)
   {}
 
   void
@@ -379,6 +402,13 @@ namespace Signorini
     csv << ",evaluated_pairs,contact_area";
     for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
       csv << ",contact_moment_" << "xyz"[d];
+    if (friction)
+      {
+        csv << ",friction_iterations,friction_change";
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << ",friction_force_" << "xyz"[d];
+        csv << ",dissipated_energy,total_dissipated_energy,stick_points,slip_points";
+      }
     csv << "\n";
     if (std::string reason; !out.commit(&reason))
       std::cerr << "signorini: warning: " << reason << std::endl;
@@ -407,6 +437,14 @@ namespace Signorini
     row << "," << s.pairs << "," << s.contact_area;
     for (unsigned int d = (dim == 2 ? 2 : 0); d < 3; ++d)
       row << "," << s.contact_moment[d];
+    if (friction)
+      {
+        row << "," << s.friction_iterations << "," << s.friction_change;
+        for (unsigned int d = 0; d < dim; ++d)
+          row << "," << s.friction_force[d];
+        row << "," << s.dissipated_energy << "," << s.total_dissipated_energy << ","
+            << s.stick_points << "," << s.slip_points;
+      }
     row << "\n";
     std::ofstream csv(file, std::ios::app);
     csv << row.str() << std::flush;

@@ -326,11 +326,6 @@ namespace Signorini
       friction.parse_parameters(prm);
       prm.leave_subsection();
       prm.leave_subsection();
-      if (friction.active())
-        throw InputError("Contact > Friction > Coefficient",
-                         "Coulomb friction is not available yet: its law is "
-                         "in (doc/friction.md), but no contact model or "
-                         "solver uses it; set 0 (frictionless)");
     }
 
     void

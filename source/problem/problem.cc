@@ -13,6 +13,7 @@ namespace Signorini
     , contact(Contact::create_model<dim>(parameters.contact,
                                          scene.dof_handler,
                                          *scene.mapping))
+    , friction_parameters(parameters.contact.friction)
     , incompressible_ids(parameters.incompressible_ids())
   {}
 
@@ -23,6 +24,8 @@ namespace Signorini
     if (!incompressible_ids.empty())
       incompressibility = std::make_unique<Incompressibility<dim>>(
         scene.dof_handler, *scene.mapping, incompressible_ids);
+    if (contact && friction_parameters.active() && !friction)
+      friction = Contact::create_friction_term<dim>(friction_parameters, *contact);
   }
 
   template struct Problem<2>;

@@ -72,7 +72,9 @@ namespace Signorini
     // penetration this causes, the iteration removes it.
     const AffineConstraints<double> target = scene.boundary_constraints(time, false);
     target.distribute(scene.solution);
-    EnergyObjective<dim> objective(*this->problem.energy, time);
+    EnergyObjective<dim> energy(*this->problem.energy, time);
+    // With friction: E + sum D_p, the lagged dissipation potential.
+    Contact::FrictionObjective<dim> objective(energy, this->problem.friction.get());
     const auto *incompressibility = this->problem.incompressibility.get();
     if (!incompressibility)
       stats = minimizer.minimize(objective, scene.homogeneous_constraints,

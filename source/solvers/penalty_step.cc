@@ -66,6 +66,7 @@ namespace Signorini
     auto                         &scene  = this->scene;
     auto                         &energy = *this->problem.energy;
     auto                         &term   = *this->problem.contact;
+    const Contact::FrictionTerm<dim> *friction = this->problem.friction.get();
     ContinuationParameters continuation = this->parameters.solver.penalty;
     // Ipopt solves each stage to its own tolerance: no loose stages.
     if (ipopt)
@@ -84,9 +85,9 @@ namespace Signorini
     // either stage minimiser), so that its step is checked against the
     // contact's admissibility too.
     {
-      Contact::PenaltyObjective<dim> objective(energy, term, time, mu_start,
-                                               rebuild);
-      objective.timer = &this->timer;
+      Contact::PenaltyObjective<dim> penalty(energy, term, time, mu_start, rebuild);
+      penalty.timer = &this->timer;
+      Contact::FrictionObjective<dim> objective(penalty, friction);
       if (!this->predict(newton, objective, time, stats))
         return false;
     }
@@ -94,8 +95,9 @@ namespace Signorini
     // Each stage: Newton on G_mu, or Ipopt as an unconstrained minimiser.
     StageSolver solve_stage = [&](const double mu, VectorType &u,
                                   const double loose_tolerance) {
-      Contact::PenaltyObjective<dim> stage(energy, term, time, mu, rebuild);
-      stage.timer = &this->timer;
+      Contact::PenaltyObjective<dim> penalty(energy, term, time, mu, rebuild);
+      penalty.timer = &this->timer;
+      Contact::FrictionObjective<dim> stage(penalty, friction);
       NewtonMinimizer stage_newton = newton;
       stage_newton.loosen(loose_tolerance);
       return stage_newton.minimize(stage, scene.homogeneous_constraints, u,
@@ -107,8 +109,9 @@ namespace Signorini
     // The tangent solves' share of the step's linear solver statistics.
     NewtonMinimizer::Statistics tangent_solves;
     StageTangent stage_tangent = [&](const double mu, VectorType &u) {
-      Contact::PenaltyObjective<dim> stage(energy, term, time, mu, rebuild);
-      stage.timer            = &this->timer;
+      Contact::PenaltyObjective<dim> penalty(energy, term, time, mu, rebuild);
+      penalty.timer = &this->timer;
+      Contact::FrictionObjective<dim> stage(penalty, friction);
       scene.solution_ghosted = u;
       {
         TimerOutput::Scope scope(this->timer, "assembly");

@@ -11,6 +11,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace Signorini
 {
   template <int dim>
@@ -254,6 +257,79 @@ namespace Signorini
     return stats.converged;
   }
 
+  template <int dim>
+  bool
+  StepSolver<dim>::solve_step(const double    time,
+                              StepStatistics &stats,
+                              Report::Step   &record)
+  {
+    Contact::FrictionTerm<dim> *friction = problem.friction.get();
+    if (!friction)
+      return solve(time, stats, record);
+    const auto &p = friction->friction_parameters();
+    scene.solution_ghosted = scene.solution;
+    friction->start_step(scene.solution_ghosted);
+    // The counts add up over the outer iterations; the rest is the last
+    // solve's.
+    const auto add_counts = [](StepStatistics &to, const StepStatistics &from) {
+      to.iterations += from.iterations;
+      to.backtracks += from.backtracks;
+      to.regularized_steps += from.regularized_steps;
+      to.convexified_steps += from.convexified_steps;
+      to.linear_iterations += from.linear_iterations;
+      to.linear_solves += from.linear_solves;
+      to.linear_fallbacks += from.linear_fallbacks;
+      to.linear_failures += from.linear_failures;
+    };
+    StepStatistics earlier; // the counts of the outer iterations before
+    for (unsigned int m = 0;; ++m)
+      {
+        stats                      = StepStatistics();
+        const bool ok              = solve(time, stats, record);
+        record.friction_iterations = m + 1;
+        if (!ok)
+          break;
+        scene.solution_ghosted = scene.solution;
+        const double change    = friction->update(scene.solution_ghosted);
+        record.friction_change = change;
+        progress << "    friction update " << m << ": max |d lambda| / max lambda = "
+                 << std::scientific << std::setprecision(3) << change
+                 << std::defaultfloat << std::endl;
+        if (change <= p.outer_tolerance)
+          break;
+        if (m + 1 >= p.max_outer_iterations)
+          {
+            stats.converged = false;
+            std::ostringstream reason;
+            reason << "the friction loop did not converge: the normal forces still "
+                      "changed by "
+                   << change << " of the largest after " << p.max_outer_iterations
+                   << " outer iterations (Contact > Friction > Maximum outer "
+                      "iterations, Outer tolerance = "
+                   << p.outer_tolerance << ")";
+            stats.reason = reason.str();
+            break;
+          }
+        add_counts(earlier, stats);
+      }
+    add_counts(stats, earlier);
+    return stats.converged;
+  }
+
+  template <int dim>
+  void
+  StepSolver<dim>::write_friction_summary(Json &contact) const
+  {
+    if (!problem.friction)
+      return;
+    const auto &p = problem.friction->friction_parameters();
+    Json       &f = contact["friction"];
+    f["coefficient"]              = p.coefficient;
+    f["slip length over h"]       = p.slip_length;
+    f["outer tolerance"]          = p.outer_tolerance;
+    f["maximum outer iterations"] = p.max_outer_iterations;
+  }
+
   void
   check_solver_compatibility(const Parameters::Scene &p, const unsigned int n_ranks)
   {
@@ -296,6 +372,28 @@ namespace Signorini
                            with_constraints + ", and this scene has Contact > Type = " +
                            p.contact.type() + ": use " +
                            (contact ? "newton-penalty or ipopt" : "newton"));
+      }
+    if (p.contact.friction.active())
+      {
+        const std::string key = "Contact > Friction > Coefficient";
+        if (!contact)
+          throw InputError(key, "friction needs contact (Contact > Type); the scene "
+                                "declares none: set 0");
+        if (!p.contact.node_wise_constraints())
+          throw InputError(key, "Coulomb friction is available against the rigid "
+                                "foundation; with Contact > Type = " +
+                                  p.contact.type() +
+                                  " it is not yet (doc/friction.md): set 0");
+        if (m == Method::ipopt)
+          throw InputError(key, "Coulomb friction is available with Solver > Method "
+                                "= interior-point and newton-penalty, not yet with "
+                                "ipopt (doc/friction.md): change the method or set 0");
+        if (p.refinement.cycles > 0 || p.refinement.coarser_mesh_estimate)
+          throw InputError(key, "friction follows the load path, and refinement "
+                                "cycles (Mesh refinement > Number of cycles, or "
+                                "Estimate from a coarser mesh) re-solve the last load "
+                                "from another mesh's state: not yet with friction "
+                                "(doc/friction.md)");
       }
     if (m == Method::ipopt && n_ranks > 1)
       throw InputError("Solver > Method",

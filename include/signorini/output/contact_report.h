@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/contact/friction_term.h>
 #include <signorini/contact/hertz.h>
 #include <signorini/contact/model.h>
 #include <signorini/output/report.h>
@@ -23,4 +24,18 @@ namespace Signorini
                      const VectorType              &u,
                      Report::Step                  &record,
                      const std::string             &profile_file);
+
+  /**
+   * The friction state of the ghosted solution @p u after a converged
+   * load step: the friction force, the dissipated energy (of the step, and
+   * summed with @p previous_total of the steps before), the sticking and
+   * slipping points into @p record, and their quantities (collective).
+   */
+  template <int dim>
+  std::vector<Quantity>
+  friction_quantities(const Contact::FrictionTerm<dim> &friction,
+                      const VectorType                 &u,
+                      const double                      previous_total,
+                      const MPI_Comm                    comm,
+                      Report::Step                     &record);
 } // namespace Signorini

@@ -47,6 +47,17 @@ namespace Signorini
       double       contact_area = 0.;    // length in 2D
       bool               has_pairs = false; // the contact has a broad phase
       unsigned long long pairs     = 0;     // pairs it evaluated last
+      // Coulomb friction (zero without): the outer loop's iterations and
+      // its last relative change of the normal forces, the friction force
+      // on body 1 (or the body), the energy dissipated in this step and
+      // up to it, and the sticking and slipping contact points.
+      unsigned int friction_iterations = 0;
+      double       friction_change     = 0.;
+      Tensor<1, 3> friction_force;
+      double       dissipated_energy       = 0.; // this step
+      double       total_dissipated_energy = 0.; // all steps up to this one
+      unsigned int stick_points = 0;
+      unsigned int slip_points  = 0;
 
       template <class Archive>
       void
@@ -57,6 +68,8 @@ namespace Signorini
         ar &solver_status &active_nodes &penetration_ratio;
         ar &contact_force_vector &contact_moment &contact_area &has_pairs &pairs;
         ar &linear_solves &amg_builds;
+        ar &friction_iterations &friction_change &friction_force;
+        ar &dissipated_energy &total_dissipated_energy &stick_points &slip_points;
       }
     };
 

@@ -32,7 +32,10 @@ namespace Signorini
   {
   public:
     /// The file in @p output_directory; only @p writer (rank 0) writes.
-    LoadStepTable(const std::string &output_directory, const bool writer);
+    /// With @p friction, the rows end with the friction columns.
+    LoadStepTable(const std::string &output_directory,
+                  const bool         writer,
+                  const bool         friction = false);
 
     /// Start the file anew with its header (a new run).
     void
@@ -53,6 +56,7 @@ namespace Signorini
   private:
     std::string file;
     bool        writer;
+    bool        friction;
   };
 
   /**

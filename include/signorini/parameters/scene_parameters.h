@@ -148,8 +148,9 @@ namespace Signorini
       std::shared_ptr<const Signorini::Contact::ModelParameters> model_parameters;
       types::boundary_id                   boundary_id = 0;
       Signorini::Contact::HertzReference   hertz;
-      /// "Contact > Friction" (issue 50: read and checked; a coefficient
-      /// > 0 is refused until a contact model uses the law).
+      /// "Contact > Friction": Coulomb friction (doc/friction.md); which
+      /// models and solvers take it is checked by
+      /// check_solver_compatibility().
       Signorini::Contact::FrictionParameters friction;
 
       /// Whether the scene declares contact.

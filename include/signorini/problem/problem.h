@@ -1,5 +1,6 @@
 #pragma once
 
+#include <signorini/contact/friction_term.h>
 #include <signorini/contact/model.h>
 #include <signorini/problem/energy_functional.h>
 #include <signorini/problem/incompressibility.h>
@@ -30,6 +31,10 @@ namespace Signorini
     Scene<dim>                             &scene;
     std::unique_ptr<EnergyFunctional<dim>>  energy;
     std::unique_ptr<Contact::Model<dim>>    contact; // null: no contact
+    /// Coulomb friction of the contact (null: frictionless), made by
+    /// setup_constraints() once the contact model has its nodes.
+    std::unique_ptr<Contact::FrictionTerm<dim>> friction;
+    Contact::FrictionParameters                 friction_parameters;
     std::unique_ptr<Incompressibility<dim>> incompressibility;
     std::set<types::material_id>            incompressible_ids;
   };

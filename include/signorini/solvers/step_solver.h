@@ -66,6 +66,21 @@ namespace Signorini
           StepStatistics              &stats,
           Report::Step                &record) = 0;
 
+    /**
+     * One load step: solve(), and with friction the outer loop around it
+     * (doc/friction.md, section 2). The friction term takes the step's
+     * start as the slip's reference and lags the normal forces of the
+     * last converged step; after each converged solve it re-lags them
+     * from the new force record, until their relative change is at most
+     * Contact > Friction > Outer tolerance. A loop that reaches Maximum
+     * outer iterations fails the step (which the driver then cuts).
+     * Without friction this is solve().
+     */
+    bool
+    solve_step(const double    time,
+               StepStatistics &stats,
+               Report::Step   &record);
+
     /// "newton", "ipopt" or "interior_point": the name of the iteration
     /// counts in the output.
     virtual std::string
@@ -96,6 +111,11 @@ namespace Signorini
      */
     virtual void
     write_summary(Json &summary) const;
+
+    /// The friction settings into summary.json's contact block (under
+    /// "friction"), if the scene has friction.
+    void
+    write_friction_summary(Json &contact) const;
 
     /// Quantities of the solver's own, reported with each step.
     virtual void

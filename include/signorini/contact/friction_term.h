@@ -1,0 +1,209 @@
+#pragma once
+
+#include <signorini/contact/friction_law.h>
+#include <signorini/contact/friction_parameters.h>
+#include <signorini/problem/objective.h>
+#include <signorini/types.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <memory>
+#include <vector>
+
+namespace Signorini
+{
+  namespace Contact
+  {
+    template <int dim>
+    class Model;
+    template <int dim>
+    class RigidFoundation;
+
+    /**
+     * Quasi-static Coulomb friction as a term of its own (doc/friction.md):
+     * the incremental dissipation potential sum_p D_p(s_p(U)) of the
+     * contact points, with the normal force lambda_p and the tangent basis
+     * T_p lagged, and the slip s_p measured from the state u_n at the
+     * start of the load step. A solver adds it to the energy it minimises
+     * (FrictionObjective), and the step's outer loop re-lags it from the
+     * contact model's force record until the normal forces settle
+     * (StepSolver::solve_step).
+     *
+     * It is built only when Contact > Friction > Coefficient > 0
+     * (create_friction_term), so a frictionless scene pays nothing.
+     */
+    template <int dim>
+    class FrictionTerm
+    {
+    public:
+      explicit FrictionTerm(const FrictionParameters &parameters)
+        : parameters(parameters)
+      {}
+      virtual ~FrictionTerm() = default;
+
+      /**
+       * Start a load step at the converged ghosted state @p u: it becomes
+       * the reference u_n of the slip, and the lag is taken from the
+       * model's force record (that of the last converged step) at @p u.
+       */
+      virtual void
+      start_step(const VectorType &u) = 0;
+
+      /**
+       * Add D at the ghosted state @p u: minus its gradient into @p rhs
+       * and its Hessian into @p hessian (either may be null), condensed
+       * with @p constraints (the caller has zeroed them; this adds and
+       * compresses). Returns D summed over the ranks (collective).
+       */
+      virtual double
+      add(const VectorType                &u,
+          const AffineConstraints<double> &constraints,
+          VectorType                      *rhs,
+          MatrixType                      *hessian) const = 0;
+
+      /**
+       * Re-lag lambda and T from the model's force record at the ghosted
+       * state @p u (after a converged solve). Returns the relative change
+       * of the normal forces, max_p |lambda_new - lambda_old| / max_p
+       * lambda_new (0 if no point carries a force; collective).
+       */
+      virtual double
+      update(const VectorType &u) = 0;
+
+      /// The friction state of one contact point, for output.
+      struct PointSample
+      {
+        Point<dim>     X;            // reference position
+        double         weight = 0.;  // tributary weight (area; length in 2D)
+        double         normal_force = 0.; // lambda_p, lagged
+        Tensor<1, dim> force;        // friction force on body 1 (or the body)
+        Tensor<1, dim> slip;         // slip increment of the step, T s
+        FrictionStatus status = FrictionStatus::open;
+        double         dissipation = 0.; // mu lambda |s| of the step
+      };
+
+      /// One sample per locally owned contact point at the ghosted @p u.
+      virtual std::vector<PointSample>
+      point_samples(const VectorType &u) const = 0;
+
+      /// The points' summed state (collective).
+      struct Totals
+      {
+        Tensor<1, dim> force;           // friction force on body 1
+        double         dissipation = 0.; // of the step
+        unsigned int   n_stick = 0;
+        unsigned int   n_slip  = 0;
+      };
+      Totals
+      totals(const VectorType &u, const MPI_Comm comm) const;
+
+      const FrictionParameters &
+      friction_parameters() const
+      {
+        return parameters;
+      }
+
+    protected:
+      const FrictionParameters parameters;
+    };
+
+    /**
+     * Friction against the rigid foundation, node by node: at node k the
+     * slip is s_k = T_k^T (u_k - u_n,k), the normal is grad g_k/|grad g_k|
+     * and lambda_k = F_k |grad g_k| with F_k the model's force record
+     * (the interior point multiplier or the penalty force), so lambda_k is
+     * the node's normal contact force. Its term lives in the node's own
+     * dim x dim block: no new sparsity.
+     */
+    template <int dim>
+    class RigidFriction : public FrictionTerm<dim>
+    {
+    public:
+      RigidFriction(const FrictionParameters &parameters,
+                    const RigidFoundation<dim> &foundation);
+
+      void
+      start_step(const VectorType &u) override;
+
+      double
+      add(const VectorType                &u,
+          const AffineConstraints<double> &constraints,
+          VectorType                      *rhs,
+          MatrixType                      *hessian) const override;
+
+      double
+      update(const VectorType &u) override;
+
+      std::vector<typename FrictionTerm<dim>::PointSample>
+      point_samples(const VectorType &u) const override;
+
+    private:
+      /// lambda and T of every node from the model's forces at @p u.
+      void
+      lag(const VectorType &u);
+
+      Tensor<1, dim>
+      increment(const unsigned int k, const VectorType &u) const;
+
+      const RigidFoundation<dim>    &foundation;
+      std::vector<double>            lambda;
+      std::vector<TangentBasis<dim>> basis;
+      std::vector<Tensor<1, dim>>    reference; // u_n at the nodes
+      std::vector<FrictionLaw<dim>>  laws;      // one slip length per node
+    };
+
+    /**
+     * The friction term of the scene's contact model, or null when the
+     * coefficient is 0. Throws an InputError naming Contact > Friction >
+     * Coefficient for a model it cannot act on yet.
+     */
+    template <int dim>
+    std::unique_ptr<FrictionTerm<dim>>
+    create_friction_term(const FrictionParameters &parameters, const Model<dim> &model);
+
+    /**
+     * An objective plus the friction term: what a step solver minimises
+     * when the scene has friction. Everything but the evaluation (the line
+     * search's safeguards) is the wrapped objective's.
+     */
+    template <int dim>
+    class FrictionObjective : public Objective
+    {
+    public:
+      FrictionObjective(Objective &inner, const FrictionTerm<dim> *friction)
+        : inner(inner)
+        , friction(friction)
+      {}
+
+      Evaluation
+      evaluate(const VectorType                &u,
+               const AffineConstraints<double> &constraints,
+               VectorType                      *rhs,
+               MatrixType                      *hessian) override;
+
+      double
+      max_step(const VectorType &u, const VectorType &d) override
+      {
+        return inner.max_step(u, d);
+      }
+
+      bool
+      limit_trial(const VectorType &u, VectorType &trial) override
+      {
+        return inner.limit_trial(u, trial);
+      }
+
+      bool
+      set_convexified(const bool on) override
+      {
+        return inner.set_convexified(on);
+      }
+
+    private:
+      Objective               &inner;
+      const FrictionTerm<dim> *friction;
+    };
+  } // namespace Contact
+} // namespace Signorini
