@@ -161,7 +161,6 @@ namespace Signorini
       const MPI_Comm  comm     = dof_handler.get_communicator();
       const IndexSet &owned    = scalar_dof_handler.locally_owned_dofs();
       const IndexSet  relevant = DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
-      fields.resize(names.size());
       for (unsigned int f = 0; f < names.size(); ++f)
         {
           VectorType field(owned, comm);
@@ -169,9 +168,10 @@ namespace Signorini
             if (owned.is_element(node_list[k].scalar_dof))
               field(node_list[k].scalar_dof) = values[f][k];
           field.compress(VectorOperation::insert);
-          fields[f].reinit(owned, relevant, comm);
-          fields[f] = field;
-          data_out.add_data_vector(scalar_dof_handler, fields[f], names[f]);
+          VectorType &kept = fields[names[f]];
+          kept.reinit(owned, relevant, comm);
+          kept = field;
+          data_out.add_data_vector(scalar_dof_handler, kept, names[f]);
         }
     }
 

@@ -14,23 +14,49 @@ namespace Signorini
   namespace Contact
   {
     template <int dim>
-    typename FrictionTerm<dim>::Totals
-    FrictionTerm<dim>::totals(const VectorType &u, const MPI_Comm comm) const
+    void
+    FrictionTerm<dim>::add_output_fields(DataOut<dim> &data_out, const VectorType &u) const
     {
-      Totals t;
+      std::vector<std::vector<double>> values(2 * dim + 1);
       for (const auto &p : point_samples(u))
         {
-          t.force += p.force;
-          t.dissipation += p.dissipation;
-          t.n_stick += (p.status == FrictionStatus::stick);
-          t.n_slip += (p.status == FrictionStatus::slip);
+          const auto row = profile_values(p);
+          for (unsigned int f = 0; f < row.size(); ++f)
+            values[f].push_back(row[f]);
         }
+      std::vector<std::string> names;
+      std::string              header = profile_header();
+      for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1)
+        {
+          end = header.find(',', start);
+          names.push_back(header.substr(start, end - start));
+        }
+      boundary().add_fields(data_out, names, values);
+    }
+
+    template <int dim>
+    std::string
+    FrictionTerm<dim>::profile_header()
+    {
+      std::string header;
       for (unsigned int d = 0; d < dim; ++d)
-        t.force[d] = Utilities::MPI::sum(t.force[d], comm);
-      t.dissipation = Utilities::MPI::sum(t.dissipation, comm);
-      t.n_stick     = Utilities::MPI::sum(t.n_stick, comm);
-      t.n_slip      = Utilities::MPI::sum(t.n_slip, comm);
-      return t;
+        header += std::string(d ? "," : "") + "friction_traction_" + "xyz"[d];
+      for (unsigned int d = 0; d < dim; ++d)
+        header += std::string(",friction_slip_") + "xyz"[d];
+      return header + ",friction_status";
+    }
+
+    template <int dim>
+    std::vector<double>
+    FrictionTerm<dim>::profile_values(const PointSample &p)
+    {
+      std::vector<double> row;
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(p.weight > 0. ? p.force[d] / p.weight : 0.);
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(p.slip[d]);
+      row.push_back(static_cast<double>(p.status));
+      return row;
     }
 
     template <int dim>
@@ -38,6 +64,7 @@ namespace Signorini
                                       const RigidFoundation<dim> &foundation)
       : FrictionTerm<dim>(parameters)
       , foundation(foundation)
+      , mixing(5, foundation.contact_nodes_on_boundary().get_communicator())
     {}
 
     template <int dim>
@@ -59,17 +86,34 @@ namespace Signorini
       const std::vector<double> &forces = foundation.forces();
       lambda.resize(nodes.size());
       basis.resize(nodes.size());
+      double largest = 0.;
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           const auto s = foundation.evaluate(nodes[k], u);
           lambda[k]    = std::max(0., forces[k]) * s.grad.norm();
           basis[k]     = tangent_basis(s.grad);
+          largest      = std::max(largest, lambda[k]);
         }
+      // The active set of the output (contact/samples.h): a node whose
+      // force is below 1e-6 of the largest is open. The interior point
+      // method's multipliers never vanish exactly.
+      const double threshold =
+        1e-6 * Utilities::MPI::max(largest, boundary().get_communicator());
+      for (double &l : lambda)
+        if (l <= threshold)
+          l = 0.;
+    }
+
+    template <int dim>
+    const BoundaryNodes<dim> &
+    RigidFriction<dim>::boundary() const
+    {
+      return foundation.contact_nodes_on_boundary();
     }
 
     template <int dim>
     void
-    RigidFriction<dim>::start_step(const VectorType &u)
+    RigidFriction<dim>::start_step(const VectorType &u, const double time)
     {
       const auto &nodes = foundation.nodes();
       reference.resize(nodes.size());
@@ -82,6 +126,42 @@ namespace Signorini
                             this->parameters.slip_length_at(nodes[k].h));
         }
       lag(u);
+      mixing.clear();
+      // A run's start without contact forces (load time 0): the first
+      // point of the history.
+      if (history.empty())
+        {
+          double largest = 0.;
+          for (const double l : lambda)
+            largest = std::max(largest, l);
+          if (Utilities::MPI::max(largest, boundary().get_communicator()) == 0.)
+            step_done(0.);
+        }
+      // Proportional loading makes the normal forces grow with the load
+      // time: extrapolate the last two converged steps' forces to this
+      // one (exact for a linear problem whose contact status holds, such
+      // as ssnv128; then the outer loop needs two iterations).
+      if (history.size() == 2 && history[0].size() == lambda.size() &&
+          history[1].size() == lambda.size() && history_times[1] > history_times[0])
+        {
+          const double slope =
+            (time - history_times[1]) / (history_times[1] - history_times[0]);
+          for (unsigned int k = 0; k < lambda.size(); ++k)
+            lambda[k] = std::max(0., history[1][k] + slope * (history[1][k] - history[0][k]));
+        }
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::step_done(const double time)
+    {
+      history.push_back(lambda);
+      history_times.push_back(time);
+      if (history.size() > 2)
+        {
+          history.erase(history.begin());
+          history_times.erase(history_times.begin());
+        }
     }
 
     template <int dim>
@@ -124,25 +204,32 @@ namespace Signorini
         rhs->compress(VectorOperation::add);
       if (hessian)
         hessian->compress(VectorOperation::add);
-      return Utilities::MPI::sum(value, foundation.contact_nodes_on_boundary().get_communicator());
+      return Utilities::MPI::sum(value, boundary().get_communicator());
     }
 
     template <int dim>
     double
     RigidFriction<dim>::update(const VectorType &u)
     {
+      // lambda was the input of the last solve; lag() makes it its output.
       const std::vector<double> old = lambda;
       lag(u);
+      AssertThrow(old.size() == lambda.size(),
+                  ExcMessage("the friction term is updated before start_step()"));
       double change = 0., largest = 0.;
       for (unsigned int k = 0; k < lambda.size(); ++k)
         {
-          change  = std::max(change, std::abs(lambda[k] - (k < old.size() ? old[k] : 0.)));
+          change  = std::max(change, std::abs(lambda[k] - old[k]));
           largest = std::max(largest, lambda[k]);
         }
-      const MPI_Comm comm = foundation.contact_nodes_on_boundary().get_communicator();
+      const MPI_Comm comm = boundary().get_communicator();
       change              = Utilities::MPI::max(change, comm);
       largest             = Utilities::MPI::max(largest, comm);
-      return largest > 0. ? change / largest : 0.;
+      const double relative = largest > 0. ? change / largest : 0.;
+      // Not yet settled: the next solve takes the accelerated forces.
+      if (relative > this->parameters.outer_tolerance)
+        lambda = mixing.next(old, lambda);
+      return relative;
     }
 
     template <int dim>
@@ -151,11 +238,18 @@ namespace Signorini
     {
       std::vector<typename FrictionTerm<dim>::PointSample> samples;
       const auto &nodes = foundation.nodes();
-      for (unsigned int k = 0; k < laws.size(); ++k)
+      // Before the first load step (the initial output) every node is open.
+      const bool started = laws.size() == nodes.size();
+      for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           typename FrictionTerm<dim>::PointSample p;
           p.X            = nodes[k].X;
           p.weight       = nodes[k].weight;
+          if (!started)
+            {
+              samples.push_back(p);
+              continue;
+            }
           p.normal_force = lambda[k];
           const auto s   = basis[k].project(increment(k, u));
           p.slip         = basis[k].lift(s);

@@ -60,7 +60,8 @@ namespace Signorini
                                        const VectorType &,
                                        const std::vector<double> &,
                                        const std::vector<NodeSample>                   &samples,
-                                       const std::function<double(const Point<dim> &)> &reference) const
+                                       const std::function<double(const Point<dim> &)> &reference,
+                                       const std::string &extra_header) const
     {
       // X.., x.., the gaps, pressure, force.., weight[, reference].
       std::vector<std::vector<double>> rows;
@@ -78,12 +79,14 @@ namespace Signorini
           row.push_back(sample.weight);
           if (reference)
             row.push_back(reference(sample.x));
+          row.insert(row.end(), sample.extra.begin(), sample.extra.end());
           rows.push_back(row);
         }
       const auto &boundary = contact_nodes_on_boundary();
       boundary.write_csv(file,
                          BoundaryNodes<dim>::profile_header(profile_gaps() + ",pressure",
-                                                            bool(reference)),
+                                                            bool(reference)) +
+                           (extra_header.empty() ? "" : "," + extra_header),
                          rows);
     }
 

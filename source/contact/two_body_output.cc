@@ -99,9 +99,11 @@ namespace Signorini
       const VectorType                                   &u,
       const std::vector<double>                          &forces,
       const std::vector<typename Model<dim>::NodeSample> &samples,
-      const std::function<double(const Point<dim> &)>    &reference_pressure) const
+      const std::function<double(const Point<dim> &)>    &reference_pressure,
+      const std::string                                  &extra_header) const
     {
-      ContactSamples<dim>::write_profile(file, u, forces, samples, reference_pressure);
+      ContactSamples<dim>::write_profile(file, u, forces, samples, reference_pressure,
+                                         extra_header);
       // Body 2's side beside it: NAME_target.csv.
       const auto dot = file.rfind(".csv");
       write_target_profile((dot == std::string::npos ? file : file.substr(0, dot)) +
@@ -203,8 +205,8 @@ namespace Signorini
     template typename PenaltyTerm<3>::Measure TwoBodyContact<3>::measure(const VectorType &u, const std::vector<double> &forces) const;
     template std::vector<typename Model<2>::NodeSample> TwoBodyContact<2>::node_samples(const VectorType &, const std::vector<double> &) const;
     template std::vector<typename Model<3>::NodeSample> TwoBodyContact<3>::node_samples(const VectorType &, const std::vector<double> &) const;
-    template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<2>::NodeSample> &samples, const std::function<double(const Point<2> &)> &reference_pressure) const;
-    template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<3>::NodeSample> &samples, const std::function<double(const Point<3> &)> &reference_pressure) const;
+    template void TwoBodyContact<2>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<2>::NodeSample> &samples, const std::function<double(const Point<2> &)> &reference_pressure, const std::string &extra_header) const;
+    template void TwoBodyContact<3>::write_profile( const std::string &file, const VectorType &u, const std::vector<double> &forces, const std::vector<typename Model<3>::NodeSample> &samples, const std::function<double(const Point<3> &)> &reference_pressure, const std::string &extra_header) const;
     template void TwoBodyContact<2>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<3>::write_target_profile(const std::string &, const VectorType &, const std::vector<double> &) const;
     template void TwoBodyContact<2>::check_initial_state(const VectorType &u) const;

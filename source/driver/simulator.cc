@@ -139,6 +139,8 @@ namespace Signorini
         postprocessor->extra_fields = [this, contact](DataOut<dim> &data_out) {
           contact->samples().add_output_fields(data_out, scene->solution_ghosted,
                                                 contact->forces());
+          if (problem->friction)
+            problem->friction->add_output_fields(data_out, scene->solution_ghosted);
         };
       }
     setup_seconds = Utilities::MPI::max(setup_timer.wall_time(), comm);
@@ -192,13 +194,11 @@ namespace Signorini
         for (const auto &q :
              contact_quantities(*problem->contact, parameters.contact.hertz, u,
                                 record,
-                                report.output_directory + "/contact_profile.csv"))
-          report.quantities.push_back(q);
-      if (problem->friction)
-        for (const auto &q : friction_quantities(
-               *problem->friction, u,
-               report.steps.empty() ? 0. : report.steps.back().total_dissipated_energy,
-               comm, record))
+                                report.output_directory + "/contact_profile.csv",
+                                problem->friction.get(),
+                                report.steps.empty() ?
+                                  0. :
+                                  report.steps.back().total_dissipated_energy))
           report.quantities.push_back(q);
       solver->add_quantities(report.quantities);
     }

@@ -1,14 +1,136 @@
+#include <signorini/contact/mindlin.h>
 #include <signorini/output/contact_report.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <limits>
 
 namespace Signorini
 {
+  namespace
+  {
+    /**
+     * The friction's quantities from its @p points (this rank's) and the
+     * contact state @p summary: the friction force, the dissipated energy,
+     * the sticking and slipping points and, with a Mindlin reference,
+     * the stick zone and the tangential traction against
+     * Cattaneo-Mindlin's under the measured load ratio Q/(mu P).
+     */
+    template <int dim>
+    std::vector<Quantity>
+    friction_quantities(
+      const Contact::FrictionTerm<dim>                              &friction,
+      const std::vector<typename Contact::FrictionTerm<dim>::PointSample> &points,
+      const typename Contact::Model<dim>::StateSummary              &summary,
+      const Contact::HertzReference                                 &hertz,
+      const double                                                   previous_dissipation,
+      Report::Step                                                  &record)
+    {
+      const MPI_Comm comm = friction.boundary().get_communicator();
+      typename Contact::FrictionTerm<dim>::Totals totals;
+      for (const auto &p : points)
+        {
+          totals.force += p.force;
+          totals.dissipation += p.dissipation;
+          totals.n_stick += (p.status == Contact::FrictionStatus::stick);
+          totals.n_slip += (p.status == Contact::FrictionStatus::slip);
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        totals.force[d] = Utilities::MPI::sum(totals.force[d], comm);
+      totals.dissipation = Utilities::MPI::sum(totals.dissipation, comm);
+      totals.n_stick     = Utilities::MPI::sum(totals.n_stick, comm);
+      totals.n_slip      = Utilities::MPI::sum(totals.n_slip, comm);
+
+      for (unsigned int d = 0; d < dim; ++d)
+        record.friction_force[d] = totals.force[d];
+      record.dissipated_energy       = totals.dissipation;
+      record.total_dissipated_energy = previous_dissipation + totals.dissipation;
+      record.stick_points            = totals.n_stick;
+      record.slip_points             = totals.n_slip;
+
+      std::vector<Quantity> quantities;
+      const auto add = [&quantities](const std::string &name, const double value) {
+        Quantity q;
+        q.name  = name;
+        q.value = value;
+        quantities.push_back(q);
+        return &quantities.back();
+      };
+      for (unsigned int d = 0; d < dim; ++d)
+        add(std::string("friction_force_") + "xyz"[d], totals.force[d]);
+      add("dissipated_energy", record.total_dissipated_energy);
+      add("stick_points", totals.n_stick);
+      add("slip_points", totals.n_slip);
+
+      const auto &parameters = friction.friction_parameters();
+      if (!parameters.mindlin_reference || !hertz.active())
+        return quantities;
+      // Cattaneo-Mindlin with the measured loads: Q the friction force's
+      // magnitude, P the normal contact force (both of the modelled part).
+      const double mu    = parameters.coefficient;
+      const double Q     = totals.force.norm();
+      const double P     = std::abs(summary.total_force[dim - 1]);
+      const double ratio = P > 0. ? Q / (mu * P) : 0.;
+      add("tangential_load_ratio", ratio);
+      const double a     = hertz.half_width();
+      const double c_ref = a * Contact::Mindlin::stick_ratio(ratio, hertz.point_contact());
+      // The stick zone's edge: midway between the farthest sticking
+      // point from the centre and the nearest slipping one (the farthest
+      // sticking point if none slips).
+      double stick_r = 0., slip_r = std::numeric_limits<double>::max();
+      for (const auto &p : points)
+        {
+          const double r = std::abs(hertz.distance(p.X));
+          if (p.status == Contact::FrictionStatus::stick)
+            stick_r = std::max(stick_r, r);
+          else if (p.status == Contact::FrictionStatus::slip)
+            slip_r = std::min(slip_r, r);
+        }
+      stick_r = Utilities::MPI::max(stick_r, comm);
+      slip_r  = Utilities::MPI::min(slip_r, comm);
+      Quantity *c = add("stick_radius", slip_r > stick_r &&
+                                            slip_r < std::numeric_limits<double>::max() ?
+                                          0.5 * (stick_r + slip_r) :
+                                          stick_r);
+      c->has_reference = true;
+      c->reference     = c_ref;
+      c->tolerance     = parameters.tolerance_stick_radius;
+      // The tangential traction along the friction force against
+      // Mindlin's q(r), relative L2 over the contact nodes (tributary
+      // weights).
+      Tensor<1, dim> direction;
+      if (Q > 0.)
+        direction = totals.force / Q;
+      const double mu_p0  = mu * hertz.peak_pressure();
+      double       error2 = 0., norm2 = 0.;
+      for (const auto &p : points)
+        {
+          if (p.weight <= 0.)
+            continue;
+          const double q_h = p.force * direction / p.weight;
+          const double q   = Contact::Mindlin::traction(std::abs(hertz.distance(p.X)), a,
+                                                      c_ref, mu_p0);
+          error2 += p.weight * (q_h - q) * (q_h - q);
+          norm2 += p.weight * q * q;
+        }
+      error2 = Utilities::MPI::sum(error2, comm);
+      norm2  = Utilities::MPI::sum(norm2, comm);
+      add("friction_traction_l2_error",
+          norm2 > 0. ? std::sqrt(error2 / norm2) : std::numeric_limits<double>::quiet_NaN());
+      return quantities;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<Quantity>
   contact_quantities(const Contact::Model<dim>     &contact,
                      const Contact::HertzReference &hertz,
                      const VectorType              &u,
                      Report::Step                  &record,
-                     const std::string             &profile_file)
+                     const std::string             &profile_file,
+                     const Contact::FrictionTerm<dim> *friction,
+                     const double                      previous_dissipation)
   {
     std::vector<Quantity> quantities;
     // The nodes' state once, for the summary, the Hertz samples and the
@@ -78,60 +200,32 @@ namespace Signorini
           return hertz.pressure(hertz.distance(x));
         };
       }
-    contact.samples().write_profile(profile_file, u, contact.forces(), samples, reference);
-    return quantities;
-  }
-
-  template <int dim>
-  std::vector<Quantity>
-  friction_quantities(const Contact::FrictionTerm<dim> &friction,
-                      const VectorType                 &u,
-                      const double                      previous_total,
-                      const MPI_Comm                    comm,
-                      Report::Step                     &record)
-  {
-    const auto totals = friction.totals(u, comm);
-    for (unsigned int d = 0; d < dim; ++d)
-      record.friction_force[d] = totals.force[d];
-    record.dissipated_energy       = totals.dissipation;
-    record.total_dissipated_energy = previous_total + totals.dissipation;
-    record.stick_points            = totals.n_stick;
-    record.slip_points             = totals.n_slip;
-    std::vector<Quantity> quantities;
-    const char           *axes = "xyz";
-    for (unsigned int d = 0; d < dim; ++d)
+    if (!friction)
       {
-        Quantity q;
-        q.name  = std::string("friction_force_") + axes[d];
-        q.value = totals.force[d];
-        quantities.push_back(q);
+        contact.samples().write_profile(profile_file, u, contact.forces(), samples,
+                                        reference);
+        return quantities;
       }
-    Quantity dissipated;
-    dissipated.name  = "dissipated_energy";
-    dissipated.value = record.total_dissipated_energy;
-    quantities.push_back(dissipated);
-    Quantity stick;
-    stick.name  = "stick_points";
-    stick.value = totals.n_stick;
-    quantities.push_back(stick);
-    Quantity slip;
-    slip.name  = "slip_points";
-    slip.value = totals.n_slip;
-    quantities.push_back(slip);
+    auto       with_friction = samples;
+    const auto points        = friction->point_samples(u);
+    AssertThrow(points.size() == samples.size(),
+                ExcMessage("the friction term's points are not the contact nodes"));
+    for (unsigned int k = 0; k < points.size(); ++k)
+      with_friction[k].extra = Contact::FrictionTerm<dim>::profile_values(points[k]);
+    for (const auto &q : friction_quantities(*friction, points, summary, hertz,
+                                             previous_dissipation, record))
+      quantities.push_back(q);
+    contact.samples().write_profile(profile_file, u, contact.forces(), with_friction,
+                                    reference, Contact::FrictionTerm<dim>::profile_header());
     return quantities;
   }
-
-  template std::vector<Quantity>
-  friction_quantities<2>(const Contact::FrictionTerm<2> &, const VectorType &, double,
-                         MPI_Comm, Report::Step &);
-  template std::vector<Quantity>
-  friction_quantities<3>(const Contact::FrictionTerm<3> &, const VectorType &, double,
-                         MPI_Comm, Report::Step &);
 
   template std::vector<Quantity>
   contact_quantities<2>(const Contact::Model<2> &, const Contact::HertzReference &,
-                        const VectorType &, Report::Step &, const std::string &);
+                        const VectorType &, Report::Step &, const std::string &,
+                        const Contact::FrictionTerm<2> *, double);
   template std::vector<Quantity>
   contact_quantities<3>(const Contact::Model<3> &, const Contact::HertzReference &,
-                        const VectorType &, Report::Step &, const std::string &);
+                        const VectorType &, Report::Step &, const std::string &,
+                        const Contact::FrictionTerm<3> *, double);
 } // namespace Signorini

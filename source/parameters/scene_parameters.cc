@@ -437,6 +437,10 @@ namespace Signorini
         throw InputError(hertz_load,
                          "line contact is per unit thickness (Dimension = 2); "
                          "in 3D use 'Point load' (a sphere)");
+      if (contact.friction.mindlin_reference && !(hertz.active() && contact.friction.active()))
+        throw InputError("Contact > Friction > Mindlin reference > Active",
+                         "Mindlin's solution needs a Hertz reference (Contact > "
+                         "Hertz reference) and friction (Coefficient > 0)");
       if (hertz.active() && hertz.contact_modulus <= 0.)
         {
           // 1/E* = sum over the bodies in contact of (1 - nu^2)/E.
@@ -444,9 +448,16 @@ namespace Signorini
           const unsigned int n = contact.model->capabilities.bodies;
           for (unsigned int b = 0; b < n; ++b)
             {
-              const auto [E, nu] =
-                Material::small_strain_young_poisson(*bodies[b].material);
-              compliance += (1. - nu * nu) / E;
+              // An incompressible body (J = 1 constraints, no bulk
+              // term): nu = 1/2 and E = 3 G, so (1 - nu^2)/E = 1/(4 G).
+              if (bodies[b].incompressible)
+                compliance += 1. / (4. * bodies[b].material->small_strain_lame().first);
+              else
+                {
+                  const auto [E, nu] =
+                    Material::small_strain_young_poisson(*bodies[b].material);
+                  compliance += (1. - nu * nu) / E;
+                }
             }
           hertz.contact_modulus = 1. / compliance;
         }

@@ -110,7 +110,11 @@ namespace Signorini
     // Starting slacks and multipliers.
     const bool   warm_start = minimizer.warm && parameters.warm_start;
     const double mu_0 =
-      (warm_start ? parameters.warm_start_barrier : parameters.initial_barrier) * unit;
+      (!warm_start                  ? parameters.initial_barrier :
+       minimizer.next_barrier > 0. ? minimizer.next_barrier :
+                                     parameters.warm_start_barrier) *
+      unit;
+    minimizer.next_barrier = 0.;
     for (unsigned int k = 0; k < n; ++k)
       {
         if (!minimizer.active[k])

@@ -84,14 +84,24 @@ namespace Signorini
       {
         // The augmented Lagrangian of the J = 1 constraints, its
         // multipliers updated after each converged solve (warm: the last
-        // load step's multipliers are the first guess).
+        // load step's multipliers are the first guess). With friction the
+        // same loop re-lags the normal forces (lags_friction()): one
+        // fixed-point loop for both, not one inside the other.
         const auto &p     = this->parameters.solver.interior_point;
         const auto &cells = incompressibility->cells();
         const MPI_Comm comm = scene.dof_handler.get_communicator();
+        Contact::FrictionTerm<dim> *friction = this->problem.friction.get();
+        const unsigned int max_updates =
+          friction ? std::max(p.max_multiplier_updates,
+                              friction->friction_parameters().max_outer_iterations) :
+                     p.max_multiplier_updates;
         unsigned int   iterations = 0;
         std::vector<double> c(cells.size(), 0.);
+        double change = 1.;
         for (unsigned int update = 0;; ++update)
           {
+            if (update > 0 && friction && change <= small_friction_change)
+              minimizer.restart_barrier(friction_restart_barrier);
             IncompressibilityLagrangian<dim> lagrangian(objective, *incompressibility, y, rho);
             stats = minimizer.minimize(lagrangian, scene.homogeneous_constraints,
                                        scene.solution, scene.solution_ghosted,
@@ -111,15 +121,34 @@ namespace Signorini
             this->progress << "    multiplier update " << update
                            << ": max |c_K|/|K| = " << std::scientific
                            << std::setprecision(3) << worst << std::endl;
-            if (worst <= p.incompressibility_tolerance)
+            change = 0.;
+            if (friction)
+              {
+                this->problem.contact->set_contact_forces(minimizer.multipliers());
+                change = friction->update(scene.solution_ghosted);
+                record.friction_iterations = update + 1;
+                record.friction_change     = change;
+                this->progress << "    friction update " << update
+                               << ": max |d lambda| / max lambda = " << change
+                               << std::endl;
+              }
+            this->progress << std::defaultfloat;
+            if (worst <= p.incompressibility_tolerance &&
+                (!friction || change <= friction->friction_parameters().outer_tolerance))
               break;
-            if (update + 1 >= p.max_multiplier_updates)
+            if (update + 1 >= max_updates)
               {
                 stats.converged = false;
                 std::ostringstream reason;
-                reason << "the J = 1 constraints are not met after "
-                       << p.max_multiplier_updates
-                       << " multiplier updates (max |c_K|/|K| = " << worst << ")";
+                if (worst > p.incompressibility_tolerance)
+                  reason << "the J = 1 constraints are not met after " << max_updates
+                         << " multiplier updates (max |c_K|/|K| = " << worst << ")";
+                else
+                  reason << "the friction loop did not converge: the normal forces "
+                            "still changed by "
+                         << change << " of the largest after " << max_updates
+                         << " outer iterations (Contact > Friction > Maximum outer "
+                            "iterations)";
                 stats.reason = reason.str();
                 break;
               }

@@ -268,7 +268,14 @@ namespace Signorini
       return solve(time, stats, record);
     const auto &p = friction->friction_parameters();
     scene.solution_ghosted = scene.solution;
-    friction->start_step(scene.solution_ghosted);
+    friction->start_step(scene.solution_ghosted, time);
+    if (lags_friction())
+      {
+        const bool ok = solve(time, stats, record);
+        if (ok)
+          friction->step_done(time);
+        return ok;
+      }
     // The counts add up over the outer iterations; the rest is the last
     // solve's.
     const auto add_counts = [](StepStatistics &to, const StepStatistics &from) {
@@ -284,7 +291,9 @@ namespace Signorini
     StepStatistics earlier; // the counts of the outer iterations before
     for (unsigned int m = 0;; ++m)
       {
-        stats                      = StepStatistics();
+        stats = StepStatistics();
+        if (m > 0)
+          prepare_friction_resolve(record.friction_change);
         const bool ok              = solve(time, stats, record);
         record.friction_iterations = m + 1;
         if (!ok)
@@ -313,6 +322,8 @@ namespace Signorini
         add_counts(earlier, stats);
       }
     add_counts(stats, earlier);
+    if (stats.converged)
+      friction->step_done(time);
     return stats.converged;
   }
 

@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -85,8 +86,9 @@ namespace Signorini
 
       /**
        * Add nodal scalar fields (one value per owned node for each name)
-       * to @p data_out; the vectors live in this object until the next
-       * call.
+       * to @p data_out; the vectors live in this object, one per name, until
+       * a later call with the same name (so that the contact's and the
+       * friction's fields can be added by separate calls to one DataOut).
        */
       void
       add_fields(DataOut<dim>                           &data_out,
@@ -148,9 +150,10 @@ namespace Signorini
       std::unique_ptr<FE_Q<dim>> scalar_fe;
       DoFHandler<dim>            scalar_dof_handler;
       AffineConstraints<double>  scalar_hanging;
-      /// The last add_fields() call's vectors, which DataOut reads when it
-      /// builds patches: a cache of the output, not state.
-      mutable std::vector<VectorType> fields;
+      /// The vectors of the fields added last under each name, which
+      /// DataOut reads when it builds patches (a map: its elements stay in
+      /// place as others are added): a cache of the output, not state.
+      mutable std::map<std::string, VectorType> fields;
     };
   } // namespace Contact
 } // namespace Signorini

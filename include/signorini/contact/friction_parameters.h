@@ -30,12 +30,16 @@ namespace Signorini
       double coefficient = 0.;
       /// eps / h_k [-]: the slip length as a fraction of the contact
       /// point's local mesh size h_k (slip_length_at()).
-      double slip_length = 1e-4;
+      double slip_length = 1e-3;
       /// Relative change of the normal forces between outer iterations
       /// below which the loop stops [-].
       double outer_tolerance = 1e-6;
       /// At most this many outer iterations per load step.
       unsigned int max_outer_iterations = 10;
+      /// "Mindlin reference": compare the stick zone and the tangential
+      /// traction with Cattaneo-Mindlin's (contact/mindlin.h).
+      bool   mindlin_reference      = false;
+      double tolerance_stick_radius = 0.; // relative; 0: not checked
 
       /// Whether the scene has friction.
       bool

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <signorini/contact/anderson.h>
+#include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/friction_law.h>
 #include <signorini/contact/friction_parameters.h>
 #include <signorini/problem/objective.h>
@@ -8,6 +10,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <string>
 
 #include <memory>
 #include <vector>
@@ -44,12 +49,19 @@ namespace Signorini
       virtual ~FrictionTerm() = default;
 
       /**
-       * Start a load step at the converged ghosted state @p u: it becomes
-       * the reference u_n of the slip, and the lag is taken from the
-       * model's force record (that of the last converged step) at @p u.
+       * Start the load step to the load time @p time at the converged
+       * ghosted state @p u: it becomes the reference u_n of the slip, and
+       * the lag is taken from the model's force record (that of the last
+       * converged step) at @p u, extrapolated linearly in the load time
+       * from the last two converged steps (step_done()) when there are two.
        */
       virtual void
-      start_step(const VectorType &u) = 0;
+      start_step(const VectorType &u, const double time) = 0;
+
+      /// The load step to @p time converged: its lagged normal forces
+      /// become the history start_step() extrapolates from.
+      virtual void
+      step_done(const double time) = 0;
 
       /**
        * Add D at the ghosted state @p u: minus its gradient into @p rhs
@@ -88,7 +100,7 @@ namespace Signorini
       virtual std::vector<PointSample>
       point_samples(const VectorType &u) const = 0;
 
-      /// The points' summed state (collective).
+      /// The points' summed state.
       struct Totals
       {
         Tensor<1, dim> force;           // friction force on body 1
@@ -96,8 +108,22 @@ namespace Signorini
         unsigned int   n_stick = 0;
         unsigned int   n_slip  = 0;
       };
-      Totals
-      totals(const VectorType &u, const MPI_Comm comm) const;
+      /// The contact nodes the points live on (for the VTU fields).
+      virtual const BoundaryNodes<dim> &
+      boundary() const = 0;
+
+      /// The VTU fields: friction_traction_x.. (force over weight),
+      /// friction_slip_x.. (the step's slip increment) and friction_status
+      /// (0 open, 1 stick, 2 slip) on the contact nodes.
+      void
+      add_output_fields(DataOut<dim> &data_out, const VectorType &u) const;
+
+      /// The profile's columns of point_samples() (same names and order as
+      /// the fields of add_output_fields()).
+      static std::string
+      profile_header();
+      static std::vector<double>
+      profile_values(const PointSample &p);
 
       const FrictionParameters &
       friction_parameters() const
@@ -115,7 +141,8 @@ namespace Signorini
      * and lambda_k = F_k |grad g_k| with F_k the model's force record
      * (the interior point multiplier or the penalty force), so lambda_k is
      * the node's normal contact force. Its term lives in the node's own
-     * dim x dim block: no new sparsity.
+     * dim x dim block: no new sparsity. The outer loop's lambda is
+     * Anderson-accelerated (AndersonMixing, depth 5).
      */
     template <int dim>
     class RigidFriction : public FrictionTerm<dim>
@@ -125,7 +152,10 @@ namespace Signorini
                     const RigidFoundation<dim> &foundation);
 
       void
-      start_step(const VectorType &u) override;
+      start_step(const VectorType &u, const double time) override;
+
+      void
+      step_done(const double time) override;
 
       double
       add(const VectorType                &u,
@@ -139,6 +169,9 @@ namespace Signorini
       std::vector<typename FrictionTerm<dim>::PointSample>
       point_samples(const VectorType &u) const override;
 
+      const BoundaryNodes<dim> &
+      boundary() const override;
+
     private:
       /// lambda and T of every node from the model's forces at @p u.
       void
@@ -149,6 +182,11 @@ namespace Signorini
 
       const RigidFoundation<dim>    &foundation;
       std::vector<double>            lambda;
+      AndersonMixing                 mixing; // of lambda over the outer loop
+      // The lagged forces of the last two converged steps and their load
+      // times (oldest first), for start_step()'s extrapolation.
+      std::vector<std::vector<double>> history;
+      std::vector<double>              history_times;
       std::vector<TangentBasis<dim>> basis;
       std::vector<Tensor<1, dim>>    reference; // u_n at the nodes
       std::vector<FrictionLaw<dim>>  laws;      // one slip length per node

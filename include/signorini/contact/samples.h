@@ -40,6 +40,9 @@ namespace Signorini
         double              pressure = 0.;
         Tensor<1, dim>      force;  // the nodal contact force
         double              weight = 0.; // tributary length or area
+        /// Further profile columns (friction's), named by write_profile's
+        /// @p extra_header.
+        std::vector<double> extra;
       };
 
       /// The nodes of the contact boundary Gamma_C (this rank's).
@@ -71,7 +74,8 @@ namespace Signorini
                     const VectorType                                &u,
                     const std::vector<double>                       &forces,
                     const std::vector<NodeSample>                   &samples,
-                    const std::function<double(const Point<dim> &)> &reference) const;
+                    const std::function<double(const Point<dim> &)> &reference,
+                    const std::string &extra_header = "") const;
 
       /// (current position, pressure) of the active nodes of @p samples
       /// (node_samples()), on every rank, sorted by position (collective).

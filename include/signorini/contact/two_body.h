@@ -348,7 +348,8 @@ namespace Signorini
                     const VectorType                                     &u,
                     const std::vector<double>                            &forces,
                     const std::vector<typename Model<dim>::NodeSample>   &samples,
-                    const std::function<double(const Point<dim> &)> &reference_pressure) const override;
+                    const std::function<double(const Point<dim> &)> &reference_pressure,
+                    const std::string &extra_header = "") const override;
 
     private:
       static constexpr unsigned int n_face_vertices =

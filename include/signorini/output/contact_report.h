@@ -14,7 +14,12 @@ namespace Signorini
    * The contact quantities of a converged state: the components of the
    * total contact force, the active nodes, the largest penetration over h
    * and, if @p hertz is active, the Hertz quantities from the pressure
-   * samples (with the force's reference). Records the contact state in
+   * samples (with the force's reference). With @p friction: the friction
+   * force, the dissipated energy (of the step, and summed with
+   * @p previous_dissipation of the steps before), the sticking and
+   * slipping points, and, with a Mindlin reference, stick_radius and the
+   * tangential traction's L2 error (contact/mindlin.h); the profile then
+   * has the friction's columns too. Records the contact state in
    * @p record and writes the profile CSV @p profile_file (collective).
    */
   template <int dim>
@@ -23,19 +28,8 @@ namespace Signorini
                      const Contact::HertzReference &hertz,
                      const VectorType              &u,
                      Report::Step                  &record,
-                     const std::string             &profile_file);
+                     const std::string             &profile_file,
+                     const Contact::FrictionTerm<dim> *friction             = nullptr,
+                     const double                      previous_dissipation = 0.);
 
-  /**
-   * The friction state of the ghosted solution @p u after a converged
-   * load step: the friction force, the dissipated energy (of the step, and
-   * summed with @p previous_total of the steps before), the sticking and
-   * slipping points into @p record, and their quantities (collective).
-   */
-  template <int dim>
-  std::vector<Quantity>
-  friction_quantities(const Contact::FrictionTerm<dim> &friction,
-                      const VectorType                 &u,
-                      const double                      previous_total,
-                      const MPI_Comm                    comm,
-                      Report::Step                     &record);
 } // namespace Signorini

@@ -152,6 +152,18 @@ namespace Signorini
     }
 
     /**
+     * Start the next solve, if it is warm, from the barrier @p relative x
+     * force scale x h instead of 'Warm start barrier': for a re-solve from
+     * a converged state whose objective changed a little (the friction
+     * loop's next outer iteration, doc/friction.md). Only the next solve.
+     */
+    void
+    restart_barrier(const double relative)
+    {
+      next_barrier = relative;
+    }
+
+    /**
      * The warm-start data, for checkpoints: the multipliers as a field on
      * their nodes' first DoFs into @p mesh, whether they start the next
      * solve, the last barrier and regularisation into @p archive (the
@@ -189,6 +201,7 @@ namespace Signorini
 
     // Warm start.
     bool                warm = false;
+    double              next_barrier = 0.; // restart_barrier(); 0: none
     std::vector<double> z;
     double              mu_last = 0.;
     double              last_regularization = 0.;

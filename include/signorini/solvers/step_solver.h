@@ -81,6 +81,14 @@ namespace Signorini
                StepStatistics &stats,
                Report::Step   &record);
 
+    /// Whether solve() itself runs the friction loop (inside a fixed-point
+    /// loop of its own), so that solve_step() only starts the step.
+    virtual bool
+    lags_friction() const
+    {
+      return false;
+    }
+
     /// "newton", "ipopt" or "interior_point": the name of the iteration
     /// counts in the output.
     virtual std::string
@@ -147,6 +155,14 @@ namespace Signorini
     }
 
   protected:
+    /// Called before each re-solve of the friction loop, from a converged
+    /// state whose lagged normal forces changed by @p change (relative).
+    virtual void
+    prepare_friction_resolve(const double change)
+    {
+      (void)change;
+    }
+
     /**
      * With Load stepping > Sliding direction: carry the previous step's
      * state along for the step to @p time (TransportPredictor) and say so
