@@ -7,8 +7,8 @@
 // file, a contact boundary id absent from the mesh, two bodies overlapping
 // at the start, an unknown Ipopt option; for the 3D shapes a radius <= 0,
 // a ball part with a wrong count of centre coordinates, a 3D die whose sag
-// exceeds its height, 'Orientation = up' on a shape that is not a ball
-// part) and benchmarks.md 5 (missing or unreadable files,
+// exceeds its height, 'Orientation = up' on a shape that has no upper
+// part, the die) and benchmarks.md 5 (missing or unreadable files,
 // unknown keys, values out of range, a mesh file with no contact boundary,
 // contradictory boundary conditions), and issue 52's: a material's
 // modulus left out (no default is taken), geometric sizes no mesh can hold
@@ -285,9 +285,10 @@ main()
            shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
                     "    set Length = 0"),
            out);
-  run_case("orientation_up_on_cylinder",
-           shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
-                    "    set Orientation = up"),
+  run_case("orientation_up_on_die",
+           shape_3d("set Shape = die\n    set Lower corner = 0, 0, 0\n"
+                    "    set Upper corner = 2, 1, 0.5\n    set Subdivisions = 2, 1, 1\n"
+                    "    set Arc sag = 0.2\n    set Orientation = up"),
            out);
   run_case("ball_part_in_2d",
            replace(scene({}), "set Subdivisions = 2, 2", "set Shape = octant ball"), out);

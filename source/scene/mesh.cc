@@ -328,12 +328,14 @@ namespace Signorini
     prm.declare_entry("Orientation",
                       "down",
                       Patterns::Selection("down|up"),
-                      "Ball parts (octant ball, quarter ball, hemisphere; "
-                      "3D): down: the lower part {z <= cz} (its flat face "
-                      "z = cz is the top); up: the upper part {z >= cz}, "
-                      "the same x and y ranges and boundary ids, its flat "
-                      "face the bottom (e.g. the lower of two balls "
-                      "pressed together). Other shapes: must be down.");
+                      "Disks (2D), ball parts and cylinders (3D): down: "
+                      "the lower part {y <= cy} (2D) or {z <= cz} (3D), "
+                      "its flat face the top; up: the upper part "
+                      "{y >= cy} or {z >= cz}, the same x (and in 3D y) "
+                      "ranges and boundary ids, its flat face the bottom "
+                      "(e.g. the lower of two cylinders or balls pressed "
+                      "together; its highest point is a mesh vertex). "
+                      "Rectangle and die: must be down.");
     prm.declare_entry("Boundary id offset",
                       "0",
                       Patterns::Integer(0, 200),
@@ -366,11 +368,10 @@ namespace Signorini
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
     upward             = (prm.get("Orientation") == "up");
-    if (upward && shape != Shape::octant_ball && shape != Shape::quarter_ball &&
-        shape != Shape::hemisphere)
+    if (upward && (shape == Shape::rectangle || shape == Shape::die))
       throw InputError(context + " > Orientation",
-                       "'up' applies to the ball parts (octant ball, "
-                       "quarter ball, hemisphere), not to '" + s + "'");
+                       "'up' applies to the disks, ball parts and "
+                       "cylinders, not to '" + s + "'");
 
     {
       double coarse_cells = 1.;
@@ -889,17 +890,31 @@ namespace Signorini
         {
           Assert(dim == 2, ExcInternalError());
           const Point<dim> origin;
-          if (g.shape == BodyGeometry::Shape::quarter_disk)
+          const bool       quarter = (g.shape == BodyGeometry::Shape::quarter_disk);
+          if (quarter)
             GridGenerator::quarter_hyper_ball(tria, origin, g.radius);
           else
             GridGenerator::half_hyper_ball(tria, origin, g.radius);
           tria.reset_all_manifolds();
           const Point<dim> center = to_point<dim>(g.center);
+          // Down: turned by -90 degrees, (x, y) -> (y, -x). Up: the
+          // quarter as it is, the half turned by +90 degrees,
+          // (x, y) -> (-y, x), into {y >= 0}.
           GridTools::transform(
             [&](const Point<dim> &p) {
               Point<dim> q = center;
-              q[0] += p[1];
-              q[1] -= p[0];
+              if (!g.upward)
+                {
+                  q[0] += p[1];
+                  q[1] -= p[0];
+                }
+              else if (quarter)
+                q += p;
+              else
+                {
+                  q[0] -= p[1];
+                  q[1] += p[0];
+                }
               return q;
             },
             tria);

@@ -33,10 +33,11 @@ namespace Signorini
    * - quarter ball (3D, x >= cx, z <= cz): 0 the sphere, 1 the plane
    *   x = cx, 2 the flat top z = cz;
    * - hemisphere (3D, z <= cz): 0 the sphere, 1 the flat top z = cz;
-   * - with 'Orientation = up' the ball parts are the upper ones (z >= cz,
-   *   the same x, y ranges), turned by 180 degrees about a horizontal
-   *   axis; their flat face z = cz (id 2, hemisphere 1) is then the
-   *   bottom;
+   * - with 'Orientation = up' the disks, ball parts and cylinders are
+   *   the upper ones (y >= cy in 2D, z >= cz in 3D, the same x (and y)
+   *   ranges and ids); their flat face (quarter disk, octant and quarter
+   *   ball, quarter cylinder id 2; half disk, hemisphere, half cylinder
+   *   id 1) is then the bottom;
    * - quarter cylinder (3D, the quarter disk in the x-z plane extruded
    *   along y over 'Length', centred on cy): 0 the curved surface, 1 the
    *   plane x = cx, 2 the flat top z = cz, 3 the end y = cy - L/2, 4 the
@@ -71,7 +72,8 @@ namespace Signorini
     double                    radius             = 1.;
     double                    length             = 1.;
     double                    arc_sag            = 0.3;
-    /// Ball parts: the upper part (z >= cz) instead of the lower one.
+    /// Disks, ball parts, cylinders: the upper part (y >= cy in 2D,
+    /// z >= cz in 3D) instead of the lower one.
     bool                      upward             = false;
     unsigned int              boundary_id_offset = 0;
 
