@@ -14,7 +14,9 @@
 // modulus left out (no default is taken), geometric sizes no mesh can hold
 // (a radius of 1e308 or 1e-300 ended in exit 1 from deal.II's mapping), and
 // a body that nothing holds where the load pushes it (the run ends at once
-// with exit 3 and the reason, instead of crawling).
+// with exit 3 and the reason, instead of crawling); and issue 51's
+// placement of a body: a rotation about a zero axis, a translation beyond
+// 1e30 or too far for the body's size.
 
 #include "run_output.h"
 
@@ -301,6 +303,21 @@ main()
   run_case("ball_radius_tiny",
            shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
                     "    set Radius = 1e-300"),
+           out);
+  // Placement: a rotation about no axis, a translation beyond 1e30, and
+  // one that takes a small body so far out that its vertices would merge.
+  run_case("placement_zero_axis",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Rotation angle = 90\n"
+                    "      set Rotation axis = 0, 0, 0\n    end"),
+           out);
+  run_case("placement_beyond_1e30",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Translation = 0, 2e30, 0\n    end"),
+           out);
+  run_case("placement_too_far_for_the_size",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Translation = 1e10, 0, 0\n    end"),
            out);
   run_case("quarter_disk_radius_huge",
            replace(scene({}), "set Subdivisions = 2, 2",

@@ -3,7 +3,9 @@
 // manifolds and the boundary ids documented in mesh.h (also the upper
 // ones, Orientation = up); and two-body scenes whose bodies touch at one
 // point (a half disk on a block, a quarter disk on an upper quarter disk):
-// their vertices must stay separate.
+// their vertices must stay separate. Placement (a rotation about the
+// origin, then a translation): a half disk in 2D, a quarter cylinder and
+// an octant ball in 3D, with their manifolds.
 // In 3D the same for the ball parts (octant, quarter, hemisphere; also
 // turned up: Orientation = up), the
 // quarter and half cylinders (also turned up) and the die: volume and the area of each
@@ -208,6 +210,36 @@ main(int argc, char **argv)
           << ", the highest point is a vertex: " << (highest ? "yes" : "NO") << "\n";
     }
   {
+    // Placement (2D): the lower half disk around the origin, turned by 180
+    // degrees and shifted to (0.3, -0.2), is the upper half disk there.
+    BodyGeometry g   = disk(BodyGeometry::Shape::half_disk);
+    g.center         = {0., 0.};
+    g.radius         = 0.8;
+    g.rotation_angle = pi;
+    g.translation    = {0.3, -0.2};
+    parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+    build_scene_mesh<2>(mesh, {g}, {0}, tria);
+    measure(tria, {{0, pi * 0.8}, {1, 1.6}}, pi * 0.32, "half disk placed", out);
+    double below = 0., off_circle = 0.;
+    bool   highest = false;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        for (const auto v : face->vertex_indices())
+          {
+            const Point<2> x = face->vertex(v);
+            below   = std::max(below, -0.2 - x[1]);
+            highest = highest || x.distance(Point<2>(0.3, 0.6)) < 1e-14;
+            if (face->at_boundary() && face->boundary_id() == 0)
+              off_circle = std::max(off_circle, std::abs(x.distance(Point<2>(0.3, -0.2)) - 0.8));
+          }
+    // After the turn by pi the flat face's refined vertices (placed by the
+    // cells' transfinite interpolation) lie up to 6e-12 below y = -0.2.
+    std::cerr << "half disk placed: below " << below << "\n";
+    out << "half disk placed: above y = -0.2 (to 1e-10): " << (below < 1e-10 ? "yes" : "NO")
+        << ", arc vertices on the circle: " << (off_circle < 1e-13 ? "yes" : "NO")
+        << ", the highest point is a vertex: " << (highest ? "yes" : "NO") << "\n";
+  }
+  {
     // Two curved bodies: a quarter disk (R = 1, center (0, 1)) on an upper
     // quarter disk (R = 2, center (0, -2), ids + 10); they touch at the
     // origin.
@@ -400,6 +432,42 @@ main(int argc, char **argv)
       out << label << " up: on its side of the planes: " << (below < 1e-12 ? "yes" : "NO")
           << "\n";
     }
+  // Placement: a quarter cylinder built around the origin, turned by 90
+  // degrees about z (its axis from y to -x) and shifted to c; an octant
+  // ball turned by 120 degrees about (1, 1, 1) and shifted to c. The same
+  // ids and areas, and the refined vertices on the placed surface: the
+  // cylinder's manifold axis turns with it.
+  {
+    BodyGeometry g = ball(BodyGeometry::Shape::quarter_cylinder, Point<3>(), r);
+    g.length         = length;
+    g.rotation_angle = pi / 2;
+    g.rotation_axis  = {0., 0., 1.};
+    g.translation    = {c[0], c[1], c[2]};
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, tria);
+    const double section = pi * r2 / 4;
+    measure(tria, {{0, pi * r / 2 * length}, {1, r * length}, {2, r * length},
+                   {3, section}, {4, section}},
+            section * length, "quarter cylinder placed", out);
+    surface_check("quarter cylinder placed: vertices of the curved surface (id 0) on the "
+                  "cylinder along x through c",
+                  off_surface(tria, 0, [&](const Point<3> &x) {
+                    return (std::hypot(x[1] - c[1], x[2] - c[2]) - r) / r;
+                  }),
+                  out);
+  }
+  {
+    BodyGeometry g = ball(BodyGeometry::Shape::octant_ball, Point<3>(), r);
+    g.rotation_angle = 2 * pi / 3;
+    g.rotation_axis  = {1. / std::sqrt(3.), 1. / std::sqrt(3.), 1. / std::sqrt(3.)};
+    g.translation    = {c[0], c[1], c[2]};
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, tria);
+    measure(tria, {{0, pi * r2 / 2}, {1, pi * r2 / 4}, {2, pi * r2 / 4}, {3, pi * r2 / 4}},
+            volume / 8, "octant ball placed", out);
+    surface_check("octant ball placed: vertices of the sphere (id 0)",
+                  off_surface(tria, 0, sphere), out);
+  }
   {
     // A 3D die 1.2 wide (x), 2 long (y), 1 high (z), sag 0.3.
     BodyGeometry g;

@@ -48,6 +48,12 @@ namespace Signorini
    * The ball parts are one, two or four copies of deal.II's octant
    * (quarter_hyper_ball), so that the lowest point of the ball is a mesh
    * vertex.
+   *
+   * Placement (the "Placement" subsection): the shape built as above is
+   * turned by 'Rotation angle' about the line through the origin along
+   * 'Rotation axis' (2D: about z) and then shifted by 'Translation',
+   * x -> Q x + t, with its manifolds (a sphere's centre, a cylinder's
+   * axis); the boundary ids stay those of the shape.
    */
   struct BodyGeometry
   {
@@ -76,6 +82,16 @@ namespace Signorini
     /// z >= cz in 3D) instead of the lower one.
     bool                      upward             = false;
     unsigned int              boundary_id_offset = 0;
+    /// Placement: x -> Q x + t, Q the rotation by rotation_angle (radians,
+    /// counter-clockwise seen from the tip of rotation_axis; in 2D about
+    /// z) and t the translation (dim entries).
+    std::vector<double>       translation;
+    std::vector<double>       rotation_axis{0., 0., 1.};
+    double                    rotation_angle = 0.;
+
+    /// Whether the placement moves the shape at all.
+    bool
+    placed() const;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -85,6 +101,13 @@ namespace Signorini
     parse_parameters(ParameterHandler  &prm,
                      const unsigned int dim,
                      const std::string &context);
+
+  private:
+    /// The "Placement" subsection, checked against the shape's size.
+    void
+    parse_placement(ParameterHandler  &prm,
+                    const unsigned int dim,
+                    const std::string &context);
   };
 
   /// The "Mesh" subsection: where the scene's coarse mesh comes from.
