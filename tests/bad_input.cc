@@ -7,14 +7,16 @@
 // file, a contact boundary id absent from the mesh, two bodies overlapping
 // at the start, an unknown Ipopt option; for the 3D shapes a radius <= 0,
 // a ball part with a wrong count of centre coordinates, a 3D die whose sag
-// exceeds its height, 'Orientation = up' on a shape that is not a ball
-// part) and benchmarks.md 5 (missing or unreadable files,
+// exceeds its height, 'Orientation = up' on a shape that has no upper
+// part, the die) and benchmarks.md 5 (missing or unreadable files,
 // unknown keys, values out of range, a mesh file with no contact boundary,
 // contradictory boundary conditions), and issue 52's: a material's
 // modulus left out (no default is taken), geometric sizes no mesh can hold
 // (a radius of 1e308 or 1e-300 ended in exit 1 from deal.II's mapping), and
 // a body that nothing holds where the load pushes it (the run ends at once
-// with exit 3 and the reason, instead of crawling).
+// with exit 3 and the reason, instead of crawling); and issue 51's
+// placement of a body: a rotation about a zero axis, a translation beyond
+// 1e30 or too far for the body's size.
 
 #include "run_output.h"
 
@@ -285,9 +287,10 @@ main()
            shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
                     "    set Length = 0"),
            out);
-  run_case("orientation_up_on_cylinder",
-           shape_3d("set Shape = half cylinder\n    set Center = 0, 0, 1\n"
-                    "    set Orientation = up"),
+  run_case("orientation_up_on_die",
+           shape_3d("set Shape = die\n    set Lower corner = 0, 0, 0\n"
+                    "    set Upper corner = 2, 1, 0.5\n    set Subdivisions = 2, 1, 1\n"
+                    "    set Arc sag = 0.2\n    set Orientation = up"),
            out);
   run_case("ball_part_in_2d",
            replace(scene({}), "set Subdivisions = 2, 2", "set Shape = octant ball"), out);
@@ -300,6 +303,21 @@ main()
   run_case("ball_radius_tiny",
            shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
                     "    set Radius = 1e-300"),
+           out);
+  // Placement: a rotation about no axis, a translation beyond 1e30, and
+  // one that takes a small body so far out that its vertices would merge.
+  run_case("placement_zero_axis",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Rotation angle = 90\n"
+                    "      set Rotation axis = 0, 0, 0\n    end"),
+           out);
+  run_case("placement_beyond_1e30",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Translation = 0, 2e30, 0\n    end"),
+           out);
+  run_case("placement_too_far_for_the_size",
+           shape_3d("set Shape = octant ball\n    set Center = 0, 0, 1\n"
+                    "    subsection Placement\n      set Translation = 1e10, 0, 0\n    end"),
            out);
   run_case("quarter_disk_radius_huge",
            replace(scene({}), "set Subdivisions = 2, 2",

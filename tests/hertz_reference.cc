@@ -19,8 +19,14 @@
 // each point's radius perturbed by up to 1% of the ring spacing (the nodes
 // of one ring are not at one r); the L2 error of the wider profile is
 // compared with the integral with the area weight r on 10^5 intervals.
+// Two curved bodies: 'Second radius' combined into R* by parse_parameters,
+// the two-sphere and two-cylinder scenes' a and p0, a concave second
+// surface, and one narrower than the body refused.
 
 #include <signorini/contact/hertz.h>
+#include <signorini/input_error.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/base/point.h>
 
@@ -160,4 +166,52 @@ main()
   out << "sphere, 5% wider profile: L2 error within 3% of the integral with weight r: "
       << verdict(std::abs(computed_3d / reference_3d - 1.) < 3e-2) << "\n";
   std::cerr << "sphere, wider profile: " << computed_3d << " against " << reference_3d << "\n";
+
+  // Two curved bodies (issue 51): 'Radius' R1 and 'Second radius' R2 give
+  // R* = R1 R2 / (R1 + R2); prm/hertz_two_spheres.prm's numbers (R1 = 1,
+  // R2 = 2, E* = 146.52, P = 0.03663) give a = 0.0500 and p0 = 6.9958, and
+  // prm/hertz_two_cylinders.prm's (P = 0.43155 per unit thickness)
+  // a = 0.0500, p0 = 5.4946. A concave R2 narrower than the body is
+  // refused, R2 = 0 leaves 'Radius' as it is.
+  const auto parse = [](const std::string &entries) {
+    dealii::ParameterHandler prm;
+    HertzReference::declare_parameters(prm);
+    prm.parse_input_from_string(entries);
+    HertzReference h;
+    h.parse_parameters(prm);
+    return h;
+  };
+  const double e_star = 1. / (0.91 / 200. + 0.91 / 400.);
+  HertzReference spheres =
+    parse("set Point load = 0.03663\nset Radius = 1\nset Second radius = 2\n");
+  spheres.contact_modulus = e_star;
+  out << "two spheres: R* = 2/3 to 1e-15, a = 0.0500 and p0 = 6.9958 to 5e-5: "
+      << verdict(std::abs(spheres.radius - 2. / 3.) < 1e-15 &&
+                 std::abs(spheres.half_width() / 0.05 - 1.) < 5e-5 &&
+                 std::abs(spheres.peak_pressure() / 6.9958 - 1.) < 5e-5)
+      << "\n";
+  HertzReference cylinders =
+    parse("set Line load = 0.43155\nset Radius = 1\nset Second radius = 2\n");
+  cylinders.contact_modulus = e_star;
+  out << "two cylinders: a = 0.0500 and p0 = 5.4946 to 5e-5: "
+      << verdict(std::abs(cylinders.half_width() / 0.05 - 1.) < 5e-5 &&
+                 std::abs(cylinders.peak_pressure() / 5.4946 - 1.) < 5e-5)
+      << "\n";
+  out << "a concave second surface: R2 = -3 gives R* = 1.5, R2 = 0 leaves R = 1: "
+      << verdict(std::abs(parse("set Line load = 1\nset Second radius = -3\n").radius - 1.5) <
+                   1e-15 &&
+                 parse("set Line load = 1\nset Second radius = 0\n").radius == 1.)
+      << "\n";
+  bool refused = false;
+  try
+    {
+      parse("set Line load = 1\nset Second radius = -0.5\n");
+    }
+  catch (const Signorini::InputError &e)
+    {
+      refused = std::string(e.what()).find("Second radius") != std::string::npos;
+    }
+  out << "a concave second surface narrower than the body (R2 = -0.5, R1 = 1) "
+         "refused naming the entry: "
+      << verdict(refused) << "\n";
 }

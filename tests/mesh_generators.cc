@@ -1,10 +1,14 @@
 // The built-in body shapes: areas and boundary lengths (per boundary id)
 // of the quarter and half disks after refinement, which checks the curved
-// manifolds and the boundary ids documented in mesh.h; and a two-body scene
-// whose bodies touch at one point: their vertices must stay separate.
+// manifolds and the boundary ids documented in mesh.h (also the upper
+// ones, Orientation = up); and two-body scenes whose bodies touch at one
+// point (a half disk on a block, a quarter disk on an upper quarter disk):
+// their vertices must stay separate. Placement (a rotation about the
+// origin, then a translation): a half disk in 2D, a quarter cylinder and
+// an octant ball in 3D, with their manifolds.
 // In 3D the same for the ball parts (octant, quarter, hemisphere; also
 // turned up: Orientation = up), the
-// quarter and half cylinders and the die: volume and the area of each
+// quarter and half cylinders (also turned up) and the die: volume and the area of each
 // boundary id against the exact values (computed with a degree 3 mapping,
 // which follows the manifolds), the vertices of the curved surface on the
 // sphere or cylinder to round-off after refinement (and those of each
@@ -168,6 +172,91 @@ main(int argc, char **argv)
     measure(tria, {{0, 1.}, {1, 1.}, {2, 4.}, {3, 4.}, {10, pi}, {11, 2.}},
             4. + pi / 2, "block + half disk", out);
   }
+  // Orientation = up (2D): the upper quarter {x >= cx, y >= cy} and half
+  // {y >= cy}, the same ids and lengths, the arc's vertices on the circle,
+  // the highest point a vertex.
+  for (const auto shape : {BodyGeometry::Shape::quarter_disk, BodyGeometry::Shape::half_disk})
+    {
+      const bool   quarter = shape == BodyGeometry::Shape::quarter_disk;
+      const std::string name = quarter ? "quarter disk up" : "half disk up";
+      BodyGeometry g = disk(shape);
+      g.center       = {0.3, -0.2};
+      g.radius       = 0.8;
+      g.upward       = true;
+      const double rr = g.radius, cx = g.center[0], cy = g.center[1];
+      parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+      build_scene_mesh<2>(mesh, {g}, {0}, tria);
+      if (quarter)
+        measure(tria, {{0, pi * rr / 2}, {1, rr}, {2, rr}}, pi * rr * rr / 4, name, out);
+      else
+        measure(tria, {{0, pi * rr}, {1, 2 * rr}}, pi * rr * rr / 2, name, out);
+      double below = 0., off_circle = 0.;
+      bool   highest = false;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          for (const auto v : face->vertex_indices())
+            {
+              const Point<2> x = face->vertex(v);
+              below = std::max(below, cy - x[1]);
+              if (quarter)
+                below = std::max(below, cx - x[0]);
+              highest = highest || x.distance(Point<2>(cx, cy + rr)) < 1e-14;
+              if (face->at_boundary() && face->boundary_id() == 0)
+                off_circle =
+                  std::max(off_circle, std::abs(x.distance(Point<2>(cx, cy)) - rr) / rr);
+            }
+      out << name << ": on its side: " << (below < 1e-12 ? "yes" : "NO")
+          << ", arc vertices on the circle: " << (off_circle < 1e-13 ? "yes" : "NO")
+          << ", the highest point is a vertex: " << (highest ? "yes" : "NO") << "\n";
+    }
+  {
+    // Placement (2D): the lower half disk around the origin, turned by 180
+    // degrees and shifted to (0.3, -0.2), is the upper half disk there.
+    BodyGeometry g   = disk(BodyGeometry::Shape::half_disk);
+    g.center         = {0., 0.};
+    g.radius         = 0.8;
+    g.rotation_angle = pi;
+    g.translation    = {0.3, -0.2};
+    parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+    build_scene_mesh<2>(mesh, {g}, {0}, tria);
+    measure(tria, {{0, pi * 0.8}, {1, 1.6}}, pi * 0.32, "half disk placed", out);
+    double below = 0., off_circle = 0.;
+    bool   highest = false;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        for (const auto v : face->vertex_indices())
+          {
+            const Point<2> x = face->vertex(v);
+            below   = std::max(below, -0.2 - x[1]);
+            highest = highest || x.distance(Point<2>(0.3, 0.6)) < 1e-14;
+            if (face->at_boundary() && face->boundary_id() == 0)
+              off_circle = std::max(off_circle, std::abs(x.distance(Point<2>(0.3, -0.2)) - 0.8));
+          }
+    // After the turn by pi the flat face's refined vertices (placed by the
+    // cells' transfinite interpolation) lie up to 6e-12 below y = -0.2.
+    std::cerr << "half disk placed: below " << below << "\n";
+    out << "half disk placed: above y = -0.2 (to 1e-10): " << (below < 1e-10 ? "yes" : "NO")
+        << ", arc vertices on the circle: " << (off_circle < 1e-13 ? "yes" : "NO")
+        << ", the highest point is a vertex: " << (highest ? "yes" : "NO") << "\n";
+  }
+  {
+    // Two curved bodies: a quarter disk (R = 1, center (0, 1)) on an upper
+    // quarter disk (R = 2, center (0, -2), ids + 10); they touch at the
+    // origin.
+    BodyGeometry upper = disk(BodyGeometry::Shape::quarter_disk);
+    BodyGeometry lower = disk(BodyGeometry::Shape::quarter_disk, 10);
+    lower.center       = {0., -2.};
+    lower.radius       = 2.;
+    lower.upward       = true;
+    parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+    build_scene_mesh<2>(mesh, {upper, lower}, {0, 1}, tria);
+    unsigned int at_origin = 0;
+    for (const auto &v : tria.get_vertices())
+      at_origin += (v.norm() < 1e-12);
+    out << "two disks: vertices at the contact point " << at_origin << " (kept apart)\n";
+    measure(tria, {{0, pi / 2}, {1, 1.}, {2, 1.}, {10, pi}, {11, 2.}, {12, 2.}},
+            pi / 4 + pi, "quarter disk + quarter disk up", out);
+  }
 
   // 3D. A ball of radius 0.8 around c = (0.3, -0.2, 1.1), 3 global
   // refinements.
@@ -323,7 +412,62 @@ main(int argc, char **argv)
                 section * length, label, out);
       surface_check(label + ": vertices of the curved surface (id 0)",
                     off_surface(tria, 0, cylinder), out);
+      // Orientation = up: the upper part {z >= cz}, the same ids and
+      // areas.
+      g.upward = true;
+      parallel::distributed::Triangulation<3> up(MPI_COMM_WORLD);
+      build_scene_mesh<3>(mesh, {g}, {0}, up);
+      if (quarter)
+        measure(up, {{0, pi * r / 2 * length}, {1, r * length}, {2, r * length},
+                     {3, section}, {4, section}},
+                section * length, label + " up", out);
+      else
+        measure(up, {{0, pi * r * length}, {1, 2 * r * length}, {2, section}, {3, section}},
+                section * length, label + " up", out);
+      surface_check(label + " up: vertices of the curved surface (id 0)",
+                    off_surface(up, 0, cylinder), out);
+      double below = 0.;
+      for (const auto &v : up.get_vertices())
+        below = std::max({below, c[2] - v[2], quarter ? c[0] - v[0] : 0.});
+      out << label << " up: on its side of the planes: " << (below < 1e-12 ? "yes" : "NO")
+          << "\n";
     }
+  // Placement: a quarter cylinder built around the origin, turned by 90
+  // degrees about z (its axis from y to -x) and shifted to c; an octant
+  // ball turned by 120 degrees about (1, 1, 1) and shifted to c. The same
+  // ids and areas, and the refined vertices on the placed surface: the
+  // cylinder's manifold axis turns with it.
+  {
+    BodyGeometry g = ball(BodyGeometry::Shape::quarter_cylinder, Point<3>(), r);
+    g.length         = length;
+    g.rotation_angle = pi / 2;
+    g.rotation_axis  = {0., 0., 1.};
+    g.translation    = {c[0], c[1], c[2]};
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, tria);
+    const double section = pi * r2 / 4;
+    measure(tria, {{0, pi * r / 2 * length}, {1, r * length}, {2, r * length},
+                   {3, section}, {4, section}},
+            section * length, "quarter cylinder placed", out);
+    surface_check("quarter cylinder placed: vertices of the curved surface (id 0) on the "
+                  "cylinder along x through c",
+                  off_surface(tria, 0, [&](const Point<3> &x) {
+                    return (std::hypot(x[1] - c[1], x[2] - c[2]) - r) / r;
+                  }),
+                  out);
+  }
+  {
+    BodyGeometry g = ball(BodyGeometry::Shape::octant_ball, Point<3>(), r);
+    g.rotation_angle = 2 * pi / 3;
+    g.rotation_axis  = {1. / std::sqrt(3.), 1. / std::sqrt(3.), 1. / std::sqrt(3.)};
+    g.translation    = {c[0], c[1], c[2]};
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    build_scene_mesh<3>(mesh, {g}, {0}, tria);
+    measure(tria, {{0, pi * r2 / 2}, {1, pi * r2 / 4}, {2, pi * r2 / 4}, {3, pi * r2 / 4}},
+            volume / 8, "octant ball placed", out);
+    surface_check("octant ball placed: vertices of the sphere (id 0)",
+                  off_surface(tria, 0, sphere), out);
+  }
   {
     // A 3D die 1.2 wide (x), 2 long (y), 1 high (z), sag 0.3.
     BodyGeometry g;

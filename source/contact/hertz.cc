@@ -59,9 +59,23 @@ namespace Signorini
       prm.declare_entry("Radius",
                         "1",
                         Patterns::Double(0.),
-                        "Effective radius R [length], 1/R = 1/R1 + 1/R2 "
+                        "Radius R1 of the contact body's surface at the "
+                        "contact point [length]; with 'Second radius' = 0 "
+                        "the effective radius R of the formulas, which may "
+                        "then be given already combined, 1/R = 1/R1 + 1/R2 "
                         "(a concave foundation of radius R2 counts "
                         "negative: 1/R = 1/R1 - 1/R2).");
+      prm.declare_entry("Second radius",
+                        "0",
+                        Patterns::Double(),
+                        "Radius R2 of the other surface at the contact "
+                        "point [length]: body 2's (two cylinders, two "
+                        "spheres) or a curved foundation's, negative if it "
+                        "is concave (R2 < -R1: a groove or cup wider than "
+                        "the body). The formulas then use the effective "
+                        "radius R* = R1 R2 / (R1 + R2), i.e. 1/R* = 1/R1 + "
+                        "1/R2. 0: the other surface is flat (a plane, a "
+                        "block) or R2 is already in 'Radius'.");
       prm.declare_entry("Axis position",
                         "0",
                         Patterns::List(Patterns::Double(), 1, 2),
@@ -146,6 +160,18 @@ namespace Signorini
                          "'Point load' (point contact, 3D), not both");
       if (active() && !(radius > 0.))
         throw InputError("Contact > Hertz reference > Radius", "must be > 0");
+      const double second_radius = prm.get_double("Second radius");
+      if (active() && second_radius != 0.)
+        {
+          // A concave second surface must be wider than the first (else
+          // the contact is conforming, or the body does not fit).
+          if (!(second_radius > 0. || -second_radius > radius))
+            throw InputError("Contact > Hertz reference > Second radius",
+                             "a concave surface (R2 < 0) must be wider than "
+                             "the body: -R2 > R1 = " + prm.get("Radius") +
+                               ", got " + prm.get("Second radius"));
+          radius = combined_radius(radius, second_radius);
+        }
       if (active() && !(modelled_fraction > 0.))
         throw InputError("Contact > Hertz reference > Modelled fraction",
                          "must be > 0");

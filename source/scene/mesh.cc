@@ -328,18 +328,56 @@ namespace Signorini
     prm.declare_entry("Orientation",
                       "down",
                       Patterns::Selection("down|up"),
-                      "Ball parts (octant ball, quarter ball, hemisphere; "
-                      "3D): down: the lower part {z <= cz} (its flat face "
-                      "z = cz is the top); up: the upper part {z >= cz}, "
-                      "the same x and y ranges and boundary ids, its flat "
-                      "face the bottom (e.g. the lower of two balls "
-                      "pressed together). Other shapes: must be down.");
+                      "Disks (2D), ball parts and cylinders (3D): down: "
+                      "the lower part {y <= cy} (2D) or {z <= cz} (3D), "
+                      "its flat face the top; up: the upper part "
+                      "{y >= cy} or {z >= cz}, the same x (and in 3D y) "
+                      "ranges and boundary ids, its flat face the bottom "
+                      "(e.g. the lower of two cylinders or balls pressed "
+                      "together; its highest point is a mesh vertex). "
+                      "Rectangle and die: must be down.");
     prm.declare_entry("Boundary id offset",
                       "0",
                       Patterns::Integer(0, 200),
                       "Added to every boundary id of this body, so that two "
                       "bodies of one scene get distinct ids (e.g. 10 for the "
                       "second body).");
+    prm.enter_subsection("Placement");
+    prm.declare_entry("Rotation angle",
+                      "0",
+                      Patterns::Double(),
+                      "[degrees] The shape, built as its entries above say, "
+                      "is turned by this angle about the line through the "
+                      "origin along 'Rotation axis' (2D: about z, "
+                      "counter-clockwise in the x-y plane; 3D: "
+                      "counter-clockwise seen from the axis' tip), then "
+                      "shifted by 'Translation': x -> Q x + t. Its "
+                      "manifolds (a sphere's centre, a cylinder's axis) "
+                      "move with it; its boundary ids stay those of the "
+                      "shape. To turn a body about its own centre, build "
+                      "it around the origin and translate it. Generated "
+                      "meshes only (a Gmsh file is used as it is).");
+    prm.declare_entry("Rotation axis",
+                      "0, 0, 1",
+                      Patterns::List(Patterns::Double(), 3, 3),
+                      "3D: direction of the rotation axis (any length > "
+                      "0). 2D: ignored (the axis is z).");
+    prm.declare_entry("Translation",
+                      "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "[length] Added to every point of the shape after "
+                      "the rotation, dim entries (extra entries are "
+                      "ignored).");
+    prm.leave_subsection();
+  }
+
+  bool
+  BodyGeometry::placed() const
+  {
+    bool moved = rotation_angle != 0.;
+    for (const double t : translation)
+      moved = moved || t != 0.;
+    return moved;
   }
 
   void
@@ -366,11 +404,10 @@ namespace Signorini
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
     upward             = (prm.get("Orientation") == "up");
-    if (upward && shape != Shape::octant_ball && shape != Shape::quarter_ball &&
-        shape != Shape::hemisphere)
+    if (upward && (shape == Shape::rectangle || shape == Shape::die))
       throw InputError(context + " > Orientation",
-                       "'up' applies to the ball parts (octant ball, "
-                       "quarter ball, hemisphere), not to '" + s + "'");
+                       "'up' applies to the disks, ball parts and "
+                       "cylinders, not to '" + s + "'");
 
     {
       double coarse_cells = 1.;
@@ -455,6 +492,73 @@ namespace Signorini
         if (shape == Shape::quarter_cylinder || shape == Shape::half_cylinder)
           check_size(length, place, context + " > Length", prm.get("Length"));
       }
+    parse_placement(prm, dim, context);
+  }
+
+  void
+  BodyGeometry::parse_placement(ParameterHandler  &prm,
+                                const unsigned int dim,
+                                const std::string &context)
+  {
+    const std::string where = context + " > Placement";
+    prm.enter_subsection("Placement");
+    const double degrees = prm.get_double("Rotation angle");
+    if (!std::isfinite(degrees))
+      throw InputError(where + " > Rotation angle",
+                       "must be a finite number, got " + prm.get("Rotation angle"));
+    rotation_angle = degrees * numbers::PI / 180.;
+    rotation_axis  = get_list<double>(prm, "Rotation axis", 3, where);
+    translation    = get_list<double>(prm, "Translation", dim, where);
+    const std::string translation_text = prm.get("Translation");
+    prm.leave_subsection();
+    const double axis_length =
+      std::sqrt(rotation_axis[0] * rotation_axis[0] + rotation_axis[1] * rotation_axis[1] +
+                rotation_axis[2] * rotation_axis[2]);
+    if (dim == 3 && rotation_angle != 0. && !(axis_length > 0.))
+      throw InputError(where + " > Rotation axis",
+                       "must not be zero when 'Rotation angle' is not 0");
+    if (dim == 3 && axis_length > 0.)
+      for (double &x : rotation_axis)
+        x /= axis_length;
+    if (!placed())
+      return;
+    // The shape's size and the largest coordinate it can reach once placed
+    // (a rotation about the origin keeps the distance from it), as the
+    // checks above ask of an unplaced shape.
+    double size = 0., place = 0.;
+    if (shape == Shape::rectangle || shape == Shape::die)
+      {
+        size = std::numeric_limits<double>::max();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            size  = std::min(size, upper_corner[d] - lower_corner[d]);
+            place = std::max({place, std::abs(lower_corner[d]), std::abs(upper_corner[d])});
+          }
+      }
+    else
+      {
+        const bool cylinder =
+          shape == Shape::quarter_cylinder || shape == Shape::half_cylinder;
+        size = cylinder ? std::min(radius, length) : radius;
+        for (unsigned int d = 0; d < dim; ++d)
+          place = std::max(place, std::abs(center[d]) + radius +
+                                    (cylinder ? 0.5 * length : 0.));
+      }
+    double shift = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      shift = std::max(shift, std::abs(translation[d]));
+    const double reach = std::sqrt(double(dim)) * place + shift;
+    if (!(reach <= max_length))
+      throw InputError(where + " > Translation",
+                       "'" + translation_text + "' places the body beyond 1e30 "
+                       "(a mesh's coordinates must lie within +-1e30)");
+    if (!(size >= min_size_over_place * reach))
+      throw InputError(where + " > Translation",
+                       "'" + translation_text + "' moves a body of size " +
+                         format_count(size) + " to coordinates of up to " +
+                         format_count(reach) +
+                         ": below 1e-9 of them the mesh's vertices could "
+                         "not be told apart");
   }
 
   void
@@ -522,6 +626,15 @@ namespace Signorini
 
   namespace
   {
+    template <int dim>
+    Tensor<1, dim>
+    unit_vector(const unsigned int direction)
+    {
+      Tensor<1, dim> e;
+      e[direction] = 1.;
+      return e;
+    }
+
     /// A manifold to attach to the final mesh.
     template <int dim>
     struct ManifoldSpec
@@ -535,6 +648,8 @@ namespace Signorini
       types::manifold_id id;
       Kind               kind;
       Point<dim>         center;
+      /// The cylinder's axis: along y unless the body was turned.
+      Tensor<1, dim>     axis = unit_vector<dim>(1);
     };
 
     template <int dim>
@@ -889,17 +1004,31 @@ namespace Signorini
         {
           Assert(dim == 2, ExcInternalError());
           const Point<dim> origin;
-          if (g.shape == BodyGeometry::Shape::quarter_disk)
+          const bool       quarter = (g.shape == BodyGeometry::Shape::quarter_disk);
+          if (quarter)
             GridGenerator::quarter_hyper_ball(tria, origin, g.radius);
           else
             GridGenerator::half_hyper_ball(tria, origin, g.radius);
           tria.reset_all_manifolds();
           const Point<dim> center = to_point<dim>(g.center);
+          // Down: turned by -90 degrees, (x, y) -> (y, -x). Up: the
+          // quarter as it is, the half turned by +90 degrees,
+          // (x, y) -> (-y, x), into {y >= 0}.
           GridTools::transform(
             [&](const Point<dim> &p) {
               Point<dim> q = center;
-              q[0] += p[1];
-              q[1] -= p[0];
+              if (!g.upward)
+                {
+                  q[0] += p[1];
+                  q[1] -= p[0];
+                }
+              else if (quarter)
+                q += p;
+              else
+                {
+                  q[0] -= p[1];
+                  q[1] += p[0];
+                }
               return q;
             },
             tria);
@@ -943,6 +1072,53 @@ namespace Signorini
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
               face->set_boundary_id(face->boundary_id() + g.boundary_id_offset);
+        }
+    }
+
+    /**
+     * The placement of @p g, x -> Q x + t (BodyGeometry), applied to the
+     * built body @p tria and to its manifolds, @p manifolds[first] on:
+     * centres and axis points move as points, a cylinder's axis direction
+     * turns. Q by Rodrigues' formula about the unit axis k,
+     * Q v = v cos(a) + (k x v) sin(a) + k (k . v)(1 - cos(a)); in 2D k = z.
+     */
+    template <int dim>
+    void
+    place_body(const BodyGeometry             &g,
+               Triangulation<dim>             &tria,
+               std::vector<ManifoldSpec<dim>> &manifolds,
+               const std::size_t               first)
+    {
+      if (!g.placed())
+        return;
+      const double c = std::cos(g.rotation_angle), s = std::sin(g.rotation_angle);
+      const auto   turn = [&](const Tensor<1, dim> &v) {
+        Tensor<1, dim> q;
+        if constexpr (dim == 2)
+          {
+            q[0] = c * v[0] - s * v[1];
+            q[1] = s * v[0] + c * v[1];
+          }
+        else
+          {
+            Tensor<1, 3> k;
+            for (unsigned int d = 0; d < 3; ++d)
+              k[d] = g.rotation_axis[d];
+            q = v * c + cross_product_3d(k, v) * s + k * ((k * v) * (1. - c));
+          }
+        return q;
+      };
+      Tensor<1, dim> shift;
+      for (unsigned int d = 0; d < dim; ++d)
+        shift[d] = g.translation[d];
+      const auto place = [&](const Point<dim> &p) {
+        return Point<dim>(turn(p) + shift);
+      };
+      GridTools::transform(place, tria);
+      for (std::size_t m = first; m < manifolds.size(); ++m)
+        {
+          manifolds[m].center = place(manifolds[m].center);
+          manifolds[m].axis   = turn(manifolds[m].axis);
         }
     }
 
@@ -1067,7 +1243,9 @@ namespace Signorini
         for (unsigned int b = 0; b < bodies.size(); ++b)
           {
             parts.push_back(std::make_unique<Triangulation<dim>>());
+            const std::size_t first = manifolds.size();
             build_body(bodies[b], material_ids[b], b, *parts.back(), manifolds);
+            place_body(bodies[b], *parts.back(), manifolds, first);
           }
         combine(parts, tria);
       }
@@ -1082,8 +1260,7 @@ namespace Signorini
       else if (m.kind == ManifoldSpec<dim>::Kind::spherical)
         tria.set_manifold(m.id, SphericalManifold<dim>(m.center));
       else if constexpr (dim == 3)
-        tria.set_manifold(m.id, CylindricalManifold<dim>(Point<dim>(0., 1., 0.),
-                                                          m.center));
+        tria.set_manifold(m.id, CylindricalManifold<dim>(m.axis, m.center));
 
     if (coarse_only)
       return;

@@ -43,7 +43,7 @@ namespace Signorini
     {
       double line_load         = 0.; // P per unit thickness; 0: not line contact
       double point_load        = 0.; // P, total force; 0: not point contact
-      double radius            = 1.; // effective radius R
+      double radius            = 1.; // effective radius R (R* of two curves)
       double axis              = 0.; // x of the axis (or of the centre)
       double axis_y            = 0.; // y of the centre (point contact)
       double modelled_fraction = 1.; // of the body (0.5 with symmetry)
@@ -64,6 +64,17 @@ namespace Signorini
       {
         return point_load > 0.;
       }
+      /**
+       * The effective radius R* of two surfaces of radii @p r1 and @p r2 at
+       * the contact, 1/R* = 1/R1 + 1/R2, i.e. R* = R1 R2 / (R1 + R2); a
+       * concave surface counts negative, a flat one (@p r2 = 0) leaves R1.
+       */
+      static double
+      combined_radius(const double r1, const double r2)
+      {
+        return r2 == 0. ? r1 : r1 * r2 / (r1 + r2);
+      }
+
       /// P: force per unit thickness (line) or total force (point).
       double
       load() const

@@ -33,10 +33,11 @@ namespace Signorini
    * - quarter ball (3D, x >= cx, z <= cz): 0 the sphere, 1 the plane
    *   x = cx, 2 the flat top z = cz;
    * - hemisphere (3D, z <= cz): 0 the sphere, 1 the flat top z = cz;
-   * - with 'Orientation = up' the ball parts are the upper ones (z >= cz,
-   *   the same x, y ranges), turned by 180 degrees about a horizontal
-   *   axis; their flat face z = cz (id 2, hemisphere 1) is then the
-   *   bottom;
+   * - with 'Orientation = up' the disks, ball parts and cylinders are
+   *   the upper ones (y >= cy in 2D, z >= cz in 3D, the same x (and y)
+   *   ranges and ids); their flat face (quarter disk, octant and quarter
+   *   ball, quarter cylinder id 2; half disk, hemisphere, half cylinder
+   *   id 1) is then the bottom;
    * - quarter cylinder (3D, the quarter disk in the x-z plane extruded
    *   along y over 'Length', centred on cy): 0 the curved surface, 1 the
    *   plane x = cx, 2 the flat top z = cz, 3 the end y = cy - L/2, 4 the
@@ -47,6 +48,12 @@ namespace Signorini
    * The ball parts are one, two or four copies of deal.II's octant
    * (quarter_hyper_ball), so that the lowest point of the ball is a mesh
    * vertex.
+   *
+   * Placement (the "Placement" subsection): the shape built as above is
+   * turned by 'Rotation angle' about the line through the origin along
+   * 'Rotation axis' (2D: about z) and then shifted by 'Translation',
+   * x -> Q x + t, with its manifolds (a sphere's centre, a cylinder's
+   * axis); the boundary ids stay those of the shape.
    */
   struct BodyGeometry
   {
@@ -71,9 +78,20 @@ namespace Signorini
     double                    radius             = 1.;
     double                    length             = 1.;
     double                    arc_sag            = 0.3;
-    /// Ball parts: the upper part (z >= cz) instead of the lower one.
+    /// Disks, ball parts, cylinders: the upper part (y >= cy in 2D,
+    /// z >= cz in 3D) instead of the lower one.
     bool                      upward             = false;
     unsigned int              boundary_id_offset = 0;
+    /// Placement: x -> Q x + t, Q the rotation by rotation_angle (radians,
+    /// counter-clockwise seen from the tip of rotation_axis; in 2D about
+    /// z) and t the translation (dim entries).
+    std::vector<double>       translation;
+    std::vector<double>       rotation_axis{0., 0., 1.};
+    double                    rotation_angle = 0.;
+
+    /// Whether the placement moves the shape at all.
+    bool
+    placed() const;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -83,6 +101,13 @@ namespace Signorini
     parse_parameters(ParameterHandler  &prm,
                      const unsigned int dim,
                      const std::string &context);
+
+  private:
+    /// The "Placement" subsection, checked against the shape's size.
+    void
+    parse_placement(ParameterHandler  &prm,
+                    const unsigned int dim,
+                    const std::string &context);
   };
 
   /// The "Mesh" subsection: where the scene's coarse mesh comes from.
