@@ -363,19 +363,26 @@ main()
            replace(scene({{"@BC@", push_down}}), "set Fixed boundaries = 2: xy",
                    "set Fixed boundaries = 2: x"),
            out);
-  // Friction (issue 50): the subsection is read and checked, a
-  // coefficient > 0 refused until a contact model uses the law.
+  // Friction (issue 50): the subsection is read and checked; friction
+  // with a solver or a reference that cannot take it is refused.
   run_case("friction_negative_coefficient",
            replace(with_contact("3", "set Shape = plane", "newton-penalty"),
                    "  subsection Foundation",
                    "  subsection Friction\n    set Coefficient = -0.3\n  end\n"
                    "  subsection Foundation"),
            out);
-  run_case("friction_not_available",
-           replace(with_contact("3", "set Shape = plane", "newton-penalty"),
+  run_case("friction_with_ipopt",
+           replace(with_contact("3", "set Shape = plane", "ipopt"),
                    "  subsection Foundation",
                    "  subsection Friction\n    set Coefficient = 0.3\n  end\n"
                    "  subsection Foundation"),
+           out);
+  run_case("friction_mindlin_without_hertz",
+           replace(with_contact("3", "set Shape = plane", "newton-penalty"),
+                   "  subsection Foundation",
+                   "  subsection Friction\n    set Coefficient = 0.3\n"
+                   "    subsection Mindlin reference\n      set Active = true\n    end\n"
+                   "  end\n  subsection Foundation"),
            out);
   auto with_hertz = [&](const std::string &lines) {
     return replace(with_contact("3", "set Shape = plane", "newton-penalty"),

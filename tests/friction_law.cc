@@ -569,9 +569,9 @@ namespace
   check_parameters(std::ostream &out)
   {
     const FrictionParameters d = parse({});
-    out << "defaults: Coefficient 0 (friction inactive), Slip length 1e-3 "
+    out << "defaults: Coefficient 0 (friction inactive), Slip length 1e-4 "
         << "(of h), Outer tolerance 1e-6, Maximum outer iterations 10: "
-        << yes(d.coefficient == 0. && !d.active() && d.slip_length == 1e-3 &&
+        << yes(d.coefficient == 0. && !d.active() && d.slip_length == 1e-4 &&
                d.outer_tolerance == 1e-6 && d.max_outer_iterations == 10)
         << std::endl;
     const FrictionParameters p = parse({{"Coefficient", "0.3"},

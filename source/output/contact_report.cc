@@ -75,26 +75,47 @@ namespace Signorini
       add("tangential_load_ratio", ratio);
       const double a     = hertz.half_width();
       const double c_ref = a * Contact::Mindlin::stick_ratio(ratio, hertz.point_contact());
-      // The stick zone's edge: midway between the farthest sticking
-      // point from the centre and the nearest slipping one (the farthest
-      // sticking point if none slips).
-      double stick_r = 0., slip_r = std::numeric_limits<double>::max();
+      // The stick zone's edges: midway between its outermost sticking
+      // point and the nearest slipping point beyond it. A line contact
+      // takes the half of the zone's width (its centre may shift with the
+      // tangential load), a point contact the radius from the contact's
+      // centre.
+      const double big = std::numeric_limits<double>::max();
+      double stick_lo = big, stick_hi = -big;
       for (const auto &p : points)
-        {
-          const double r = std::abs(hertz.distance(p.X));
-          if (p.status == Contact::FrictionStatus::stick)
-            stick_r = std::max(stick_r, r);
-          else if (p.status == Contact::FrictionStatus::slip)
-            slip_r = std::min(slip_r, r);
-        }
-      stick_r = Utilities::MPI::max(stick_r, comm);
-      slip_r  = Utilities::MPI::min(slip_r, comm);
-      Quantity *c = add("stick_radius", slip_r > stick_r &&
-                                            slip_r < std::numeric_limits<double>::max() ?
-                                          0.5 * (stick_r + slip_r) :
-                                          stick_r);
+        if (p.status == Contact::FrictionStatus::stick)
+          {
+            const double r = hertz.point_contact() ? std::abs(hertz.distance(p.X)) :
+                                                     hertz.distance(p.X);
+            stick_lo = std::min(stick_lo, r);
+            stick_hi = std::max(stick_hi, r);
+          }
+      stick_lo = Utilities::MPI::min(stick_lo, comm);
+      stick_hi = Utilities::MPI::max(stick_hi, comm);
+      double slip_lo = -big, slip_hi = big; // the nearest slipping points
+      for (const auto &p : points)
+        if (p.status == Contact::FrictionStatus::slip)
+          {
+            const double r = hertz.point_contact() ? std::abs(hertz.distance(p.X)) :
+                                                     hertz.distance(p.X);
+            if (r < stick_lo)
+              slip_lo = std::max(slip_lo, r);
+            if (r > stick_hi)
+              slip_hi = std::min(slip_hi, r);
+          }
+      slip_lo = Utilities::MPI::max(slip_lo, comm);
+      slip_hi = Utilities::MPI::min(slip_hi, comm);
+      const double edge_hi = slip_hi < big ? 0.5 * (stick_hi + slip_hi) : stick_hi;
+      const double edge_lo = slip_lo > -big ? 0.5 * (stick_lo + slip_lo) : stick_lo;
+      double       radius  = 0.;
+      if (stick_hi >= stick_lo)
+        radius = hertz.point_contact() ? edge_hi : 0.5 * (edge_hi - edge_lo);
+      Quantity *c = add("stick_radius", radius);
       c->has_reference = true;
       c->reference     = c_ref;
+      record.tangential_load_ratio  = ratio;
+      record.stick_radius           = c->value;
+      record.stick_radius_reference = c_ref;
       c->tolerance     = parameters.tolerance_stick_radius;
       // The tangential traction along the friction force against
       // Mindlin's q(r), relative L2 over the contact nodes (tributary

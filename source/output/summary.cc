@@ -407,7 +407,8 @@ namespace Signorini
         csv << ",friction_iterations,friction_change";
         for (unsigned int d = 0; d < dim; ++d)
           csv << ",friction_force_" << "xyz"[d];
-        csv << ",dissipated_energy,total_dissipated_energy,stick_points,slip_points";
+        csv << ",dissipated_energy,total_dissipated_energy,stick_points,slip_points,"
+               "tangential_load_ratio,stick_radius,stick_radius_reference";
       }
     csv << "\n";
     if (std::string reason; !out.commit(&reason))
@@ -443,7 +444,8 @@ namespace Signorini
         for (unsigned int d = 0; d < dim; ++d)
           row << "," << s.friction_force[d];
         row << "," << s.dissipated_energy << "," << s.total_dissipated_energy << ","
-            << s.stick_points << "," << s.slip_points;
+            << s.stick_points << "," << s.slip_points << "," << s.tangential_load_ratio << ","
+            << s.stick_radius << "," << s.stick_radius_reference;
       }
     row << "\n";
     std::ofstream csv(file, std::ios::app);

@@ -30,7 +30,7 @@ namespace Signorini
       double coefficient = 0.;
       /// eps / h_k [-]: the slip length as a fraction of the contact
       /// point's local mesh size h_k (slip_length_at()).
-      double slip_length = 1e-3;
+      double slip_length = 1e-4;
       /// Relative change of the normal forces between outer iterations
       /// below which the loop stops [-].
       double outer_tolerance = 1e-6;

@@ -58,6 +58,11 @@ namespace Signorini
       double       total_dissipated_energy = 0.; // all steps up to this one
       unsigned int stick_points = 0;
       unsigned int slip_points  = 0;
+      // With a Mindlin reference (0 without): the stick zone's half-width
+      // (radius) and Mindlin's for the step's load ratio Q/(mu P).
+      double stick_radius           = 0.;
+      double stick_radius_reference = 0.;
+      double tangential_load_ratio  = 0.;
 
       template <class Archive>
       void
@@ -70,6 +75,7 @@ namespace Signorini
         ar &linear_solves &amg_builds;
         ar &friction_iterations &friction_change &friction_force;
         ar &dissipated_energy &total_dissipated_energy &stick_points &slip_points;
+        ar &stick_radius &stick_radius_reference &tangential_load_ratio;
       }
     };
 
