@@ -54,6 +54,11 @@ CASES = [
     ("mesh_mismatch", ["newton-penalty", "ipopt", "newton-penalty + CG"]),
     ("ironing_grazing", ["newton-penalty", "ipopt", "newton-penalty + CG"]),
     ("ironing_full", ["newton-penalty", "ipopt", "newton-penalty + CG"]),
+    # Coulomb friction (issue 50): mu = 1 and 0.01, a stick-slip reversal.
+    ("friction_mu1", ["interior-point", "newton-penalty"]),
+    ("friction_mu001", ["interior-point", "newton-penalty"]),
+    ("friction_reversal", ["interior-point", "newton-penalty"]),
+    ("ssnv128_mu001", ["interior-point", "newton-penalty"]),
 ]
 
 

@@ -118,6 +118,17 @@ main()
     {"ironing_grazing", "ipopt", ironing, 611},
     {"ironing_full", "newton-penalty", ironing, 213},
     {"ironing_full", "ipopt", ironing, 1210},
+    // Coulomb friction (issue 50), measured 2026-11-28 under this machine's
+    // kernel only (Haswell); rigid-foundation interior point and Newton
+    // counts were the same under all six kernels before.
+    {"friction_mu1", "interior-point", "", 196},
+    {"friction_mu1", "newton-penalty", "", 171},
+    {"friction_mu001", "interior-point", "", 64},
+    {"friction_mu001", "newton-penalty", "", 64},
+    {"friction_reversal", "interior-point", "", 384},
+    {"friction_reversal", "newton-penalty", "", 376},
+    {"ssnv128_mu001", "interior-point", "", 35},
+    {"ssnv128_mu001", "newton-penalty", "", 38},
   };
 
   std::ofstream     out("output");
