@@ -83,6 +83,9 @@ run fault_drill 0 python3 "$b/fault_drill.py" --build "$build" \
 expect drill/fault_drill.json drill/reference/run/reactions.csv
 expect_text fault_drill.log "the same as the run without a stop: yes"
 
+run friction_cost 0 python3 "$b/friction_cost.py" --quick --binary "$binary" --out friction
+expect_text friction_cost.log "| sliding block mu = 0.3"
+
 run hard_cases 0 python3 "$b/hard_cases.py" --quick --build "$build" --out hard
 expect hard/ssnv187_corner_ipopt/summary.json hard/stiff_on_soft_block_newton-penalty/summary.json
 expect_text hard_cases.log "6 converged, 0 not converged"

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""What Coulomb friction costs (issue 50): the Cattaneo-Mindlin scene with
+friction (P, then Q in three steps) against the same mesh frictionless with
+P only (the issue's yardstick: at most 2x), and the sliding block with
+friction against the same path frictionless. The two runs of a pair
+alternate, --runs times each; the table gives the medians of the whole
+process's wall time, the iterations and the ratio. Writes the table into
+doc/friction.md between its FRICTION_COST markers (not with --quick or
+--no-doc) and prints it.
+
+    python3 benchmarks/friction_cost.py [--binary build/signorini]
+                                        [--runs 3] [--out DIR]
+                                        [--quick] [--no-doc]
+
+--quick runs the sliding block pair once: a check of the script.
+"""
+
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_common as bc  # noqa: E402
+
+# (name, scene, overrides with friction, overrides without)
+PAIRS = [
+    ("Cattaneo-Mindlin 2D (P, then 3 Q steps) / frictionless P only",
+     "cattaneo_mindlin_2d.prm",
+     {},
+     {"Contact/Friction": {"Coefficient": 0},
+      "Contact/Friction/Mindlin reference": {"Active": "false"},
+      "Load stepping": {"End time": 1, "Number of steps": 2}}),
+    ("Cattaneo-Mindlin 2D refined once / frictionless P only",
+     "cattaneo_mindlin_2d.prm",
+     {"Mesh": {"Local refinements": 6}},
+     {"Mesh": {"Local refinements": 6},
+      "Contact/Friction": {"Coefficient": 0},
+      "Contact/Friction/Mindlin reference": {"Active": "false"},
+      "Load stepping": {"End time": 1, "Number of steps": 2}}),
+    ("sliding block mu = 0.3 / the same path frictionless",
+     "sliding_block.prm",
+     {},
+     {"Contact/Friction": {"Coefficient": 0}}),
+]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--binary", default=os.path.join(bc.ROOT, "build", "signorini"))
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--out", default=None)
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--no-doc", action="store_true")
+    args = bc.absolute_paths(parser.parse_args(), "binary", "out")
+    bc.require_binary("friction_cost.py", args.binary)
+    info = bc.machine_info()
+    bc.warn_if_busy(info)
+    pairs = PAIRS[2:] if args.quick else PAIRS
+    runs = 1 if args.quick else args.runs
+    out = args.out or tempfile.mkdtemp(prefix="friction_cost_")
+    rows = []
+    for name, scene, with_f, without_f in pairs:
+        times = {"with": [], "without": []}
+        its = {}
+        for r in range(runs):
+            for label, overrides in (("with", with_f), ("without", without_f)):
+                work = os.path.join(out, f"{scene[:-4]}_{label}_{len(rows)}_{r}")
+                os.makedirs(work, exist_ok=True)
+                wall, summary = bc.run_variant(args.binary, scene, work, overrides)
+                times[label].append(wall)
+                its[label] = bc.iterations(summary)
+        t_with = statistics.median(times["with"])
+        t_without = statistics.median(times["without"])
+        rows.append([name, bc.fmt(its["with"], "d"), bc.fmt(its["without"], "d"),
+                     bc.fmt_time(t_with), bc.fmt_time(t_without),
+                     f"{t_with / t_without:.2f}"])
+        print(f"{name}: {t_with:.2f} s / {t_without:.2f} s", flush=True)
+    table = bc.markdown_table(
+        ["pair", "iterations with", "without", "median wall with", "without",
+         "ratio"], rows)
+    text = bc.stamp(info, sys.argv, args.binary, args.quick) + "\n\n" + table + "\n"
+    print(text)
+    if not args.quick and not args.no_doc:
+        bc.replace_block(os.path.join(bc.ROOT, "doc", "friction.md"), "FRICTION_COST", text)
+
+
+if __name__ == "__main__":
+    main()
