@@ -371,11 +371,12 @@ main()
                    "  subsection Friction\n    set Coefficient = -0.3\n  end\n"
                    "  subsection Foundation"),
            out);
-  run_case("friction_with_ipopt",
-           replace(with_contact("3", "set Shape = plane", "ipopt"),
+  run_case("friction_with_refinement_cycles",
+           replace(with_contact("3", "set Shape = plane", "newton-penalty"),
                    "  subsection Foundation",
                    "  subsection Friction\n    set Coefficient = 0.3\n  end\n"
-                   "  subsection Foundation"),
+                   "  subsection Foundation") +
+             "subsection Mesh refinement\n  set Number of cycles = 2\nend\n",
            out);
   run_case("friction_mindlin_without_hertz",
            replace(with_contact("3", "set Shape = plane", "newton-penalty"),

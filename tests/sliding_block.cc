@@ -2,7 +2,7 @@
 // 50): a block pressed onto the plane, then dragged sideways by its top
 // until every contact node slides. Checked from reactions.csv,
 // load_steps.csv, contact_profile.csv and summary.json:
-// - with the interior point method and with newton-penalty: while any
+// - with the interior point method, newton-penalty and Ipopt: while any
 //   contact node sticks, |Rx| < mu |Ry|; once all slide, |Rx| = mu |Ry|
 //   within 0.1% (measured: 5.5e-8 and 5.4e-8); the top's reaction balances
 //   the friction and the normal contact force (1e-6 of |Ry|); every
@@ -122,6 +122,13 @@ main()
       << "\n";
   check_path(out, "run_penalty", "newton-penalty");
   check_nodes(out, "run_penalty", "newton-penalty, t = 2");
+
+  out << "ipopt: exit code 0: "
+      << verdict(RunOutput::run_scene("run_ipopt", "sliding_block.prm",
+                                      "subsection Solver\n  set Method = ipopt\nend\n") == 0)
+      << "\n";
+  check_path(out, "run_ipopt", "ipopt");
+  check_nodes(out, "run_ipopt", "ipopt, t = 2");
 
   // Partial slip: the path stopped at t = 1.2.
   out << "partial slip: exit code 0: "

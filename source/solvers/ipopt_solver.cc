@@ -364,6 +364,8 @@ namespace Signorini
       const Evaluation   e = s.energy.evaluate(u, time, *s.constraints, &rhs, &H);
       if (!e.admissible)
         return false;
+      if (s.friction)
+        s.friction->add(u, *s.constraints, nullptr, &H);
       H *= obj_factor;
       if (s.penalty)
         s.penalty->add_penalty(u, obj_factor * mu, *s.constraints, nullptr, &H);
@@ -468,8 +470,13 @@ namespace Signorini
         }
       TimerOutput::Scope scope(s.timer, "assembly");
       if (!s.penalty)
-        return s.energy.evaluate(u, time, *s.constraints, minus_gradient, nullptr);
-      Contact::PenaltyObjective<dim> objective(s.energy, *s.penalty, time, mu);
+        {
+          EnergyObjective<dim>            energy(s.energy, time);
+          Contact::FrictionObjective<dim> objective(energy, s.friction);
+          return objective.evaluate(u, *s.constraints, minus_gradient, nullptr);
+        }
+      Contact::PenaltyObjective<dim>  penalty(s.energy, *s.penalty, time, mu);
+      Contact::FrictionObjective<dim> objective(penalty, s.friction);
       return objective.evaluate(u, *s.constraints, minus_gradient, nullptr);
     }
 

@@ -14,6 +14,7 @@ namespace Signorini
     const auto *contact = this->problem.contact.get();
     ipopt = this->make_ipopt(contact ? contact->node_wise_constraints() : nullptr,
                              this->problem.incompressibility.get());
+    ipopt->set_friction(this->problem.friction.get());
   }
 
   template <int dim>

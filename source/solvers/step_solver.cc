@@ -395,10 +395,6 @@ namespace Signorini
                                 "foundation; with Contact > Type = " +
                                   p.contact.type() +
                                   " it is not yet (doc/friction.md): set 0");
-        if (m == Method::ipopt)
-          throw InputError(key, "Coulomb friction is available with Solver > Method "
-                                "= interior-point and newton-penalty, not yet with "
-                                "ipopt (doc/friction.md): change the method or set 0");
         if (p.refinement.cycles > 0 || p.refinement.coarser_mesh_estimate)
           throw InputError(key, "friction follows the load path, and refinement "
                                 "cycles (Mesh refinement > Number of cycles, or "

@@ -4,6 +4,7 @@
 
 #include <signorini/archive.h>
 
+#include <signorini/contact/friction_term.h>
 #include <signorini/contact/penalty.h>
 #include <signorini/contact/node_wise_constraints.h>
 #include <signorini/problem/energy_functional.h>
@@ -119,6 +120,15 @@ namespace Signorini
     void
     set_step_limit(const double max_increment);
 
+    /// Add the lagged friction term @p term (null: none) to the objective
+    /// of every following solve: f, its gradient and its Hessian
+    /// (doc/friction.md). The step's outer loop re-lags it between solves.
+    void
+    set_friction(const Contact::FrictionTerm<dim> *term)
+    {
+      friction = term;
+    }
+
     /**
      * Minimise at load time @p time. @p target: the Dirichlet values and
      * hanging nodes at this time (inhomogeneous constraints, used to
@@ -167,6 +177,7 @@ namespace Signorini
     const Contact::NodeWiseConstraints<dim> *contact;
     const Incompressibility<dim>        *incompressibility;
     Contact::PenaltyTerm<dim>           *penalty = nullptr;
+    const Contact::FrictionTerm<dim>    *friction = nullptr;
     PatternBuilder                       rebuild_pattern;
     bool                                 pattern_stale = false;
     bool                                 non_finite_stop = false;
