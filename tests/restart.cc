@@ -136,6 +136,11 @@ main()
   check_scene(out, "incompressible", "ssnv187_incompressible.prm",
               four_steps + "subsection Solver\n  set Method = interior-point\nend\n",
               {1});
+  // Coulomb friction (issue 50): the friction history of the last two
+  // steps (the next step's extrapolation) is in the checkpoint; from step
+  // 3 (pressing) and step 7 (sliding), on 1 and 2 ranks.
+  check_scene(out, "friction", "sliding_block.prm", "", {2, 6});
+  check_scene(out, "friction_ranks", "sliding_block.prm", klu, {6}, mpirun);
   // Refinement cycles: checkpoints in the load path (0: after step 1),
   // after cycle 0 is recorded (2), on cycle 1's mesh before its solve (3)
   // and after it (4).

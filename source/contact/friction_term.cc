@@ -1,3 +1,4 @@
+#include <signorini/archive_io.h>
 #include <signorini/contact/friction_term.h>
 #include <signorini/contact/rigid_foundation.h>
 #include <signorini/input_error.h>
@@ -102,6 +103,33 @@ namespace Signorini
       for (double &l : lambda)
         if (l <= threshold)
           l = 0.;
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
+    {
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &node : foundation.nodes())
+        dofs.push_back(node.dofs[0]);
+      const unsigned int n = history.size();
+      archive << n << history_times;
+      for (const auto &lambdas : history)
+        mesh.save_dof_field(dofs, lambdas);
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::load_state(InputArchive &archive, MeshState &mesh)
+    {
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &node : foundation.nodes())
+        dofs.push_back(node.dofs[0]);
+      unsigned int n = 0;
+      archive >> n >> history_times;
+      history.clear();
+      for (unsigned int i = 0; i < n; ++i)
+        history.push_back(mesh.load_dof_field(dofs));
     }
 
     template <int dim>

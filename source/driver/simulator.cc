@@ -564,6 +564,8 @@ namespace Signorini
         OutputArchive archive(out);
         if (problem->contact)
           problem->contact->save_state(archive, resume.mesh_state);
+        if (problem->friction)
+          problem->friction->save_state(archive, resume.mesh_state);
         solver->save_state(archive, resume.mesh_state);
         postprocessor->save_state(archive);
       }
@@ -923,6 +925,8 @@ namespace Signorini
     InputArchive       part_archive(part_stream);
     if (problem->contact)
       problem->contact->load_state(part_archive, mesh_state);
+    if (problem->friction)
+      problem->friction->load_state(part_archive, mesh_state);
     solver->load_state(part_archive, mesh_state);
     postprocessor->load_state(part_archive);
 

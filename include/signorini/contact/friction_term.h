@@ -1,9 +1,11 @@
 #pragma once
 
+#include <signorini/archive.h>
 #include <signorini/contact/anderson.h>
 #include <signorini/contact/boundary_nodes.h>
 #include <signorini/contact/friction_law.h>
 #include <signorini/contact/friction_parameters.h>
+#include <signorini/mesh_state.h>
 #include <signorini/problem/objective.h>
 #include <signorini/types.h>
 
@@ -131,6 +133,18 @@ namespace Signorini
         return parameters;
       }
 
+      /**
+       * Save what the next load step needs beyond the model's force
+       * record (which the model saves): the history of step_done(), as
+       * fields on the contact nodes into @p mesh and its load times into
+       * @p archive; load_state() reads it back on the restarted run's mesh
+       * (any number of ranks), so that a restart takes the same path.
+       */
+      virtual void
+      save_state(OutputArchive &archive, MeshState &mesh) const = 0;
+      virtual void
+      load_state(InputArchive &archive, MeshState &mesh) = 0;
+
     protected:
       const FrictionParameters parameters;
     };
@@ -171,6 +185,11 @@ namespace Signorini
 
       const BoundaryNodes<dim> &
       boundary() const override;
+
+      void
+      save_state(OutputArchive &archive, MeshState &mesh) const override;
+      void
+      load_state(InputArchive &archive, MeshState &mesh) override;
 
     private:
       /// lambda and T of every node from the model's forces at @p u.
