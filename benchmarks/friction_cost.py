@@ -26,9 +26,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import bench_common as bc  # noqa: E402
 
 # (name, scene, overrides with friction, overrides without)
+# P over t in [0, 1] in two steps, then Q/(mu P) = 0.75 in one (t = 1.5).
 ONE_Q_STEP = {"Boundary conditions": {
-                  "Prescribed displacement": "0.00579*max(t - 1, 0); -0.0116*min(t, 1)"},
-              "Load stepping": {"End time": 2, "Number of steps": 3}}
+                  "Prescribed displacement": "0.01158*max(t - 1, 0); -0.0116*min(t, 1)"},
+              "Load stepping": {"End time": 1.5, "Number of steps": 3}}
 P_ONLY = {"Contact/Friction": {"Coefficient": 0},
           "Contact/Friction/Mindlin reference": {"Active": "false"},
           "Load stepping": {"End time": 1, "Number of steps": 2}}
