@@ -1,6 +1,7 @@
 #include <signorini/archive_io.h>
 #include <signorini/contact/friction_term.h>
 #include <signorini/contact/rigid_foundation.h>
+#include <signorini/contact/samples.h>
 #include <signorini/input_error.h>
 
 #include <deal.II/base/mpi.h>
@@ -18,21 +19,27 @@ namespace Signorini
     void
     FrictionTerm<dim>::add_output_fields(DataOut<dim> &data_out, const VectorType &u) const
     {
-      std::vector<std::vector<double>> values(2 * dim + 1);
+      std::vector<std::vector<double>> values(column_names().size());
       for (const auto &p : point_samples(u))
         {
           const auto row = profile_values(p);
           for (unsigned int f = 0; f < row.size(); ++f)
             values[f].push_back(row[f]);
         }
+      boundary().add_fields(data_out, column_names(), values);
+    }
+
+    template <int dim>
+    std::vector<std::string>
+    FrictionTerm<dim>::column_names()
+    {
       std::vector<std::string> names;
-      std::string              header = profile_header();
-      for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 1)
-        {
-          end = header.find(',', start);
-          names.push_back(header.substr(start, end - start));
-        }
-      boundary().add_fields(data_out, names, values);
+      for (unsigned int d = 0; d < dim; ++d)
+        names.push_back(std::string("friction_traction_") + "xyz"[d]);
+      for (unsigned int d = 0; d < dim; ++d)
+        names.push_back(std::string("friction_slip_") + "xyz"[d]);
+      names.push_back("friction_status");
+      return names;
     }
 
     template <int dim>
@@ -40,11 +47,9 @@ namespace Signorini
     FrictionTerm<dim>::profile_header()
     {
       std::string header;
-      for (unsigned int d = 0; d < dim; ++d)
-        header += std::string(d ? "," : "") + "friction_traction_" + "xyz"[d];
-      for (unsigned int d = 0; d < dim; ++d)
-        header += std::string(",friction_slip_") + "xyz"[d];
-      return header + ",friction_status";
+      for (const auto &name : column_names())
+        header += (header.empty() ? "" : ",") + name;
+      return header;
     }
 
     template <int dim>
@@ -87,19 +92,16 @@ namespace Signorini
       const std::vector<double> &forces = foundation.forces();
       lambda.resize(nodes.size());
       basis.resize(nodes.size());
-      double largest = 0.;
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           const auto s = foundation.evaluate(nodes[k], u);
           lambda[k]    = std::max(0., forces[k]) * s.grad.norm();
           basis[k]     = tangent_basis(s.grad);
-          largest      = std::max(largest, lambda[k]);
         }
       // The active set of the output (contact/samples.h): a node whose
       // force is below 1e-6 of the largest is open. The interior point
       // method's multipliers never vanish exactly.
-      const double threshold =
-        1e-6 * Utilities::MPI::max(largest, boundary().get_communicator());
+      const double threshold = active_threshold(lambda, boundary().get_communicator());
       for (double &l : lambda)
         if (l <= threshold)
           l = 0.;
@@ -109,10 +111,9 @@ namespace Signorini
     void
     RigidFriction<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
     {
-      std::vector<types::global_dof_index> dofs;
-      for (const auto &node : foundation.nodes())
-        dofs.push_back(node.dofs[0]);
-      const unsigned int n = history.size();
+      // On the DoFs the foundation keeps its force record on.
+      const auto         dofs = foundation.force_dofs();
+      const unsigned int n    = history.size();
       archive << n << history_times;
       for (const auto &lambdas : history)
         mesh.save_dof_field(dofs, lambdas);
@@ -122,10 +123,8 @@ namespace Signorini
     void
     RigidFriction<dim>::load_state(InputArchive &archive, MeshState &mesh)
     {
-      std::vector<types::global_dof_index> dofs;
-      for (const auto &node : foundation.nodes())
-        dofs.push_back(node.dofs[0]);
-      unsigned int n = 0;
+      const auto   dofs = foundation.force_dofs();
+      unsigned int n    = 0;
       archive >> n >> history_times;
       history.clear();
       for (unsigned int i = 0; i < n; ++i)

@@ -55,7 +55,6 @@ namespace Signorini
         q.name  = name;
         q.value = value;
         quantities.push_back(q);
-        return &quantities.back();
       };
       for (unsigned int d = 0; d < dim; ++d)
         add(std::string("friction_force_") + "xyz"[d], totals.force[d]);
@@ -80,13 +79,15 @@ namespace Signorini
       // takes the half of the zone's width (its centre may shift with the
       // tangential load), a point contact the radius from the contact's
       // centre.
+      const auto position = [&hertz](const Point<dim> &X) {
+        return hertz.point_contact() ? std::abs(hertz.distance(X)) : hertz.distance(X);
+      };
       const double big = std::numeric_limits<double>::max();
       double stick_lo = big, stick_hi = -big;
       for (const auto &p : points)
         if (p.status == Contact::FrictionStatus::stick)
           {
-            const double r = hertz.point_contact() ? std::abs(hertz.distance(p.X)) :
-                                                     hertz.distance(p.X);
+            const double r = position(p.X);
             stick_lo = std::min(stick_lo, r);
             stick_hi = std::max(stick_hi, r);
           }
@@ -96,8 +97,7 @@ namespace Signorini
       for (const auto &p : points)
         if (p.status == Contact::FrictionStatus::slip)
           {
-            const double r = hertz.point_contact() ? std::abs(hertz.distance(p.X)) :
-                                                     hertz.distance(p.X);
+            const double r = position(p.X);
             if (r < stick_lo)
               slip_lo = std::max(slip_lo, r);
             if (r > stick_hi)
@@ -110,13 +110,16 @@ namespace Signorini
       double       radius  = 0.;
       if (stick_hi >= stick_lo)
         radius = hertz.point_contact() ? edge_hi : 0.5 * (edge_hi - edge_lo);
-      Quantity *c = add("stick_radius", radius);
-      c->has_reference = true;
-      c->reference     = c_ref;
+      Quantity c;
+      c.name          = "stick_radius";
+      c.value         = radius;
+      c.has_reference = true;
+      c.reference     = c_ref;
+      c.tolerance     = parameters.tolerance_stick_radius;
+      quantities.push_back(c);
       record.tangential_load_ratio  = ratio;
-      record.stick_radius           = c->value;
+      record.stick_radius           = radius;
       record.stick_radius_reference = c_ref;
-      c->tolerance     = parameters.tolerance_stick_radius;
       // The tangential traction along the friction force against
       // Mindlin's q(r), relative L2 over the contact nodes (tributary
       // weights).

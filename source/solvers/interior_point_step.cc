@@ -121,18 +121,13 @@ namespace Signorini
             this->progress << "    multiplier update " << update
                            << ": max |c_K|/|K| = " << std::scientific
                            << std::setprecision(3) << worst << std::endl;
+            this->progress << std::defaultfloat;
             change = 0.;
             if (friction)
               {
                 this->problem.contact->set_contact_forces(minimizer.multipliers());
-                change = friction->update(scene.solution_ghosted);
-                record.friction_iterations = update + 1;
-                record.friction_change     = change;
-                this->progress << "    friction update " << update
-                               << ": max |d lambda| / max lambda = " << change
-                               << std::endl;
+                change = this->update_friction(update, record);
               }
-            this->progress << std::defaultfloat;
             if (worst <= p.incompressibility_tolerance &&
                 (!friction || change <= friction->friction_parameters().outer_tolerance))
               break;
@@ -144,11 +139,7 @@ namespace Signorini
                   reason << "the J = 1 constraints are not met after " << max_updates
                          << " multiplier updates (max |c_K|/|K| = " << worst << ")";
                 else
-                  reason << "the friction loop did not converge: the normal forces "
-                            "still changed by "
-                         << change << " of the largest after " << max_updates
-                         << " outer iterations (Contact > Friction > Maximum outer "
-                            "iterations)";
+                  reason << this->friction_failure(change, max_updates);
                 stats.reason = reason.str();
                 break;
               }

@@ -298,25 +298,13 @@ namespace Signorini
         record.friction_iterations = m + 1;
         if (!ok)
           break;
-        scene.solution_ghosted = scene.solution;
-        const double change    = friction->update(scene.solution_ghosted);
-        record.friction_change = change;
-        progress << "    friction update " << m << ": max |d lambda| / max lambda = "
-                 << std::scientific << std::setprecision(3) << change
-                 << std::defaultfloat << std::endl;
+        const double change = update_friction(m, record);
         if (change <= p.outer_tolerance)
           break;
         if (m + 1 >= p.max_outer_iterations)
           {
             stats.converged = false;
-            std::ostringstream reason;
-            reason << "the friction loop did not converge: the normal forces still "
-                      "changed by "
-                   << change << " of the largest after " << p.max_outer_iterations
-                   << " outer iterations (Contact > Friction > Maximum outer "
-                      "iterations, Outer tolerance = "
-                   << p.outer_tolerance << ")";
-            stats.reason = reason.str();
+            stats.reason    = friction_failure(change, p.max_outer_iterations);
             break;
           }
         add_counts(earlier, stats);
@@ -325,6 +313,34 @@ namespace Signorini
     if (stats.converged)
       friction->step_done(time);
     return stats.converged;
+  }
+
+  template <int dim>
+  double
+  StepSolver<dim>::update_friction(const unsigned int iteration, Report::Step &record)
+  {
+    scene.solution_ghosted     = scene.solution;
+    const double change        = problem.friction->update(scene.solution_ghosted);
+    record.friction_iterations = iteration + 1;
+    record.friction_change     = change;
+    progress << "    friction update " << iteration << ": max |d lambda| / max lambda = "
+             << std::scientific << std::setprecision(3) << change << std::defaultfloat
+             << std::endl;
+    return change;
+  }
+
+  template <int dim>
+  std::string
+  StepSolver<dim>::friction_failure(const double change, const unsigned int iterations) const
+  {
+    const auto        &p = problem.friction->friction_parameters();
+    std::ostringstream reason;
+    reason << "the friction loop did not converge: the normal forces still changed by "
+           << change << " of the largest after " << iterations
+           << " outer iterations (Contact > Friction > Maximum outer iterations, Outer "
+              "tolerance = "
+           << p.outer_tolerance << ")";
+    return reason.str();
   }
 
   template <int dim>

@@ -14,9 +14,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <string>
-
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace Signorini
@@ -110,6 +109,7 @@ namespace Signorini
         unsigned int   n_stick = 0;
         unsigned int   n_slip  = 0;
       };
+
       /// The contact nodes the points live on (for the VTU fields).
       virtual const BoundaryNodes<dim> &
       boundary() const = 0;
@@ -120,8 +120,12 @@ namespace Signorini
       void
       add_output_fields(DataOut<dim> &data_out, const VectorType &u) const;
 
-      /// The profile's columns of point_samples() (same names and order as
-      /// the fields of add_output_fields()).
+      /// The names of a point's output columns (the VTU fields and the
+      /// profile's columns), in the order of profile_values().
+      static std::vector<std::string>
+      column_names();
+
+      /// column_names() as a CSV header, and a point's values.
       static std::string
       profile_header();
       static std::vector<double>

@@ -155,6 +155,21 @@ namespace Signorini
     }
 
   protected:
+    /**
+     * One update of the friction loop after its outer iteration
+     * @p iteration converged (with the model's force record set): re-lag
+     * the friction term at the solution, record the iteration and the
+     * change in @p record and print them. Returns the relative change of
+     * the normal forces.
+     */
+    double
+    update_friction(const unsigned int iteration, Report::Step &record);
+
+    /// The reason of a friction loop whose normal forces still changed by
+    /// @p change after @p iterations outer iterations.
+    std::string
+    friction_failure(const double change, const unsigned int iterations) const;
+
     /// Called before each re-solve of the friction loop, from a converged
     /// state whose lagged normal forces changed by @p change (relative).
     virtual void
