@@ -18,7 +18,7 @@ namespace Signorini
       std::vector<double> f(n);
       for (std::size_t i = 0; i < n; ++i)
         f[i] = g[i] - x[i];
-      if (last_f.size() == n && depth > 0)
+      if (has_last && last_f.size() == n && depth > 0)
         {
           // dg_j = g_j+1 - g_j = (f_j+1 - f_j) + (x_j+1 - x_j).
           std::vector<double> d_f(n), d_g(n);
@@ -37,8 +37,9 @@ namespace Signorini
         }
       else
         clear();
-      last_x = x;
-      last_f = f;
+      last_x   = x;
+      last_f   = f;
+      has_last = true;
       std::vector<double> result(g);
       const unsigned int  m = df.size();
       if (m > 0)

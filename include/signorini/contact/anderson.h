@@ -39,6 +39,7 @@ namespace Signorini
         df.clear();
         last_x.clear();
         last_f.clear();
+        has_last = false;
       }
 
       std::vector<double>
@@ -49,6 +50,10 @@ namespace Signorini
       MPI_Comm                        comm;
       std::deque<std::vector<double>> dx, df; // differences of g and of f
       std::vector<double>             last_x, last_f;
+      // A last iterate exists (not last_f's size: a rank without points
+      // has empty vectors, and every rank must take the same branch into
+      // the collective sum of next()).
+      bool                            has_last = false;
     };
   } // namespace Contact
 } // namespace Signorini
