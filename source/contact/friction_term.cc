@@ -2,6 +2,8 @@
 #include <signorini/contact/friction_term.h>
 #include <signorini/contact/rigid_foundation.h>
 #include <signorini/contact/samples.h>
+#include <signorini/contact/two_body_friction.h>
+#include <signorini/contact/two_pass.h>
 #include <signorini/input_error.h>
 
 #include <deal.II/base/mpi.h>
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace Signorini
 {
@@ -66,42 +69,21 @@ namespace Signorini
     }
 
     template <int dim>
-    RigidFriction<dim>::RigidFriction(const FrictionParameters   &parameters,
-                                      const RigidFoundation<dim> &foundation)
+    NodeFriction<dim>::NodeFriction(const FrictionParameters &parameters,
+                                    const MPI_Comm            comm)
       : FrictionTerm<dim>(parameters)
-      , foundation(foundation)
-      , mixing(5, foundation.contact_nodes_on_boundary().get_communicator())
+      , mixing(5, comm)
     {}
 
     template <int dim>
-    Tensor<1, dim>
-    RigidFriction<dim>::increment(const unsigned int k, const VectorType &u) const
-    {
-      Tensor<1, dim> du;
-      const auto    &node = foundation.nodes()[k];
-      for (unsigned int c = 0; c < dim; ++c)
-        du[c] = u[node.dofs[c]] - reference[k][c];
-      return du;
-    }
-
-    template <int dim>
     void
-    RigidFriction<dim>::lag(const VectorType &u)
+    NodeFriction<dim>::lag_all(const VectorType &u)
     {
-      const auto                &nodes  = foundation.nodes();
-      const std::vector<double> &forces = foundation.forces();
-      lambda.resize(nodes.size());
-      basis.resize(nodes.size());
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          const auto s = foundation.evaluate(nodes[k], u);
-          lambda[k]    = std::max(0., forces[k]) * s.grad.norm();
-          basis[k]     = tangent_basis(s.grad);
-        }
+      lag(u, lambda, basis);
       // The active set of the output (contact/samples.h): a node whose
       // force is below 1e-6 of the largest is open. The interior point
       // method's multipliers never vanish exactly.
-      const double threshold = active_threshold(lambda, boundary().get_communicator());
+      const double threshold = active_threshold(lambda, this->boundary().get_communicator());
       for (double &l : lambda)
         if (l <= threshold)
           l = 0.;
@@ -109,10 +91,9 @@ namespace Signorini
 
     template <int dim>
     void
-    RigidFriction<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
+    NodeFriction<dim>::save_state(OutputArchive &archive, MeshState &mesh) const
     {
-      // On the DoFs the foundation keeps its force record on.
-      const auto         dofs = foundation.force_dofs();
+      const auto         dofs = history_dofs();
       const unsigned int n    = history.size();
       archive << n << history_times;
       for (const auto &lambdas : history)
@@ -121,9 +102,9 @@ namespace Signorini
 
     template <int dim>
     void
-    RigidFriction<dim>::load_state(InputArchive &archive, MeshState &mesh)
+    NodeFriction<dim>::load_state(InputArchive &archive, MeshState &mesh)
     {
-      const auto   dofs = foundation.force_dofs();
+      const auto   dofs = history_dofs();
       unsigned int n    = 0;
       archive >> n >> history_times;
       history.clear();
@@ -132,28 +113,19 @@ namespace Signorini
     }
 
     template <int dim>
-    const BoundaryNodes<dim> &
-    RigidFriction<dim>::boundary() const
-    {
-      return foundation.contact_nodes_on_boundary();
-    }
-
-    template <int dim>
     void
-    RigidFriction<dim>::start_step(const VectorType &u, const double time)
+    NodeFriction<dim>::start_step(const VectorType &u, const double time)
     {
-      const auto &nodes = foundation.nodes();
-      reference.resize(nodes.size());
+      const auto &nodes = this->boundary().nodes();
+      set_reference(u);
+      started = true;
       laws.clear();
       for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          for (unsigned int c = 0; c < dim; ++c)
-            reference[k][c] = u[nodes[k].dofs[c]];
-          laws.emplace_back(this->parameters.coefficient,
-                            this->parameters.slip_length_at(nodes[k].h));
-        }
-      lag(u);
+        laws.emplace_back(this->parameters.coefficient,
+                          this->parameters.slip_length_at(nodes[k].h));
+      lag_all(u);
       mixing.clear();
+      last_change = std::numeric_limits<double>::infinity();
       // A run's start without contact forces (load time 0): the first
       // point of the history.
       if (history.empty())
@@ -161,7 +133,7 @@ namespace Signorini
           double largest = 0.;
           for (const double l : lambda)
             largest = std::max(largest, l);
-          if (Utilities::MPI::max(largest, boundary().get_communicator()) == 0.)
+          if (Utilities::MPI::max(largest, this->boundary().get_communicator()) == 0.)
             step_done(0.);
         }
       // Proportional loading makes the normal forces grow with the load
@@ -180,7 +152,7 @@ namespace Signorini
 
     template <int dim>
     void
-    RigidFriction<dim>::step_done(const double time)
+    NodeFriction<dim>::step_done(const double time)
     {
       history.push_back(lambda);
       history_times.push_back(time);
@@ -193,54 +165,71 @@ namespace Signorini
 
     template <int dim>
     double
-    RigidFriction<dim>::add(const VectorType                &u,
-                            const AffineConstraints<double> &constraints,
-                            VectorType                      *rhs,
-                            MatrixType                      *hessian) const
+    NodeFriction<dim>::add(const VectorType                &u,
+                           const AffineConstraints<double> &constraints,
+                           VectorType                      *rhs,
+                           MatrixType                      *hessian) const
     {
-      AssertThrow(laws.size() == foundation.nodes().size(),
-                  ExcMessage("the friction term is used before start_step()"));
-      double                               value = 0.;
-      Vector<double>                       gradient;
-      FullMatrix<double>                   matrix;
-      Vector<double>                       local_rhs(dim);
-      std::vector<types::global_dof_index> dofs(dim);
+      AssertThrow(started, ExcMessage("the friction term is used before start_step()"));
+      std::vector<bool>                has;
+      const auto                       du = increments(u, has);
+      const AffineConstraints<double> &c =
+        (rhs || hessian) ? condensation(constraints) : constraints;
+      double             value = 0.;
+      Vector<double>     gradient;
+      FullMatrix<double> matrix;
+      Vector<double>     local_rhs;
+      FullMatrix<double> local_matrix;
+      Coupling           coupled;
       for (unsigned int k = 0; k < laws.size(); ++k)
         {
-          if (lambda[k] <= 0.)
+          if (lambda[k] <= 0. || !has[k])
             continue;
-          const auto &node = foundation.nodes()[k];
-          value += laws[k].evaluate_rigid(basis[k], increment(k, u), lambda[k],
+          value += laws[k].evaluate_rigid(basis[k], du[k], lambda[k],
                                           rhs ? &gradient : nullptr,
                                           hessian ? &matrix : nullptr);
           if (!rhs && !hessian)
             continue;
-          for (unsigned int i = 0; i < dim; ++i)
-            dofs[i] = node.dofs[i];
+          // D_k(du_k) with du_k linear in the coupled DoFs: the chain rule
+          // through the factors.
+          coupling(k, coupled);
+          const unsigned int n = coupled.dofs.size();
           if (rhs)
-            for (unsigned int i = 0; i < dim; ++i)
-              local_rhs(i) = -gradient(i);
+            {
+              local_rhs.reinit(n);
+              for (unsigned int i = 0; i < n; ++i)
+                local_rhs(i) = -coupled.factors[i] * gradient(coupled.components[i]);
+            }
+          if (hessian)
+            {
+              local_matrix.reinit(n, n);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  local_matrix(i, j) = coupled.factors[i] * coupled.factors[j] *
+                                       matrix(coupled.components[i], coupled.components[j]);
+            }
           if (rhs && hessian)
-            constraints.distribute_local_to_global(matrix, local_rhs, dofs, *hessian, *rhs);
+            c.distribute_local_to_global(local_matrix, local_rhs, coupled.dofs, *hessian, *rhs);
           else if (rhs)
-            constraints.distribute_local_to_global(local_rhs, dofs, *rhs);
+            c.distribute_local_to_global(local_rhs, coupled.dofs, *rhs);
           else
-            constraints.distribute_local_to_global(matrix, dofs, *hessian);
+            c.distribute_local_to_global(local_matrix, coupled.dofs, *hessian);
         }
       if (rhs)
         rhs->compress(VectorOperation::add);
       if (hessian)
         hessian->compress(VectorOperation::add);
-      return Utilities::MPI::sum(value, boundary().get_communicator());
+      return Utilities::MPI::sum(value, this->boundary().get_communicator());
     }
 
     template <int dim>
     double
-    RigidFriction<dim>::update(const VectorType &u)
+    NodeFriction<dim>::update(const VectorType &u)
     {
-      // lambda was the input of the last solve; lag() makes it its output.
+      // lambda was the input of the last solve; lag_all() makes it its
+      // output.
       const std::vector<double> old = lambda;
-      lag(u);
+      lag_all(u);
       AssertThrow(old.size() == lambda.size(),
                   ExcMessage("the friction term is updated before start_step()"));
       double change = 0., largest = 0.;
@@ -249,40 +238,60 @@ namespace Signorini
           change  = std::max(change, std::abs(lambda[k] - old[k]));
           largest = std::max(largest, lambda[k]);
         }
-      const MPI_Comm comm = boundary().get_communicator();
+      const MPI_Comm comm = this->boundary().get_communicator();
       change              = Utilities::MPI::max(change, comm);
       largest             = Utilities::MPI::max(largest, comm);
       const double relative = largest > 0. ? change / largest : 0.;
       // Not yet settled: the next solve takes the accelerated forces.
       if (relative > this->parameters.outer_tolerance)
-        lambda = mixing.next(old, lambda);
+        {
+          // A change larger than the last one: the mixing's history has
+          // stopped describing the map (noise of the inner solves near
+          // the tolerance, a node switching between stick and slip, or a
+          // mode that flips sign from one iteration to the next). Restart
+          // it with a half step, which damps such a flipping mode.
+          if (relative > last_change)
+            {
+              mixing.clear();
+              for (unsigned int k = 0; k < lambda.size(); ++k)
+                lambda[k] = 0.5 * (old[k] + lambda[k]);
+            }
+          else
+            lambda = mixing.next(old, lambda);
+        }
+      last_change = relative;
       return relative;
     }
 
     template <int dim>
     std::vector<typename FrictionTerm<dim>::PointSample>
-    RigidFriction<dim>::point_samples(const VectorType &u) const
+    NodeFriction<dim>::point_samples(const VectorType &u) const
     {
       std::vector<typename FrictionTerm<dim>::PointSample> samples;
-      const auto &nodes = foundation.nodes();
+      const auto &nodes = this->boundary().nodes();
       // Before the first load step (the initial output) every node is open.
-      const bool started = laws.size() == nodes.size();
+      // (a flag, not laws.size(): a rank without contact nodes must still
+      // take part in increments()'s collective calls).
+      std::vector<bool>           has;
+      std::vector<Tensor<1, dim>> du;
+      if (started)
+        du = increments(u, has);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           typename FrictionTerm<dim>::PointSample p;
-          p.X            = nodes[k].X;
-          p.weight       = nodes[k].weight;
-          if (!started)
+          p.X      = nodes[k].X;
+          p.weight = nodes[k].weight;
+          if (!started || !has[k])
             {
               samples.push_back(p);
               continue;
             }
           p.normal_force = lambda[k];
-          const auto s   = basis[k].project(increment(k, u));
+          const auto s   = basis[k].project(du[k]);
           p.slip         = basis[k].lift(s);
           p.status       = laws[k].status(s, lambda[k]);
           p.dissipation  = laws[k].dissipated_energy(s, lambda[k]);
-          // The foundation's force on the body: minus dD/du.
+          // The friction force on the node's body: minus dD/du.
           p.force = -basis[k].lift(laws[k].evaluate(s, lambda[k]).traction);
           samples.push_back(p);
         }
@@ -290,18 +299,100 @@ namespace Signorini
     }
 
     template <int dim>
+    RigidFriction<dim>::RigidFriction(const FrictionParameters   &parameters,
+                                      const RigidFoundation<dim> &foundation)
+      : NodeFriction<dim>(parameters,
+                          foundation.contact_nodes_on_boundary().get_communicator())
+      , foundation(foundation)
+    {}
+
+    template <int dim>
+    const BoundaryNodes<dim> &
+    RigidFriction<dim>::boundary() const
+    {
+      return foundation.contact_nodes_on_boundary();
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::lag(const VectorType               &u,
+                            std::vector<double>            &normal_forces,
+                            std::vector<TangentBasis<dim>> &bases)
+    {
+      const auto                &nodes  = foundation.nodes();
+      const std::vector<double> &forces = foundation.forces();
+      normal_forces.resize(nodes.size());
+      bases.resize(nodes.size());
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          const auto s     = foundation.evaluate(nodes[k], u);
+          normal_forces[k] = std::max(0., forces[k]) * s.grad.norm();
+          bases[k]         = tangent_basis(s.grad);
+        }
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::set_reference(const VectorType &u)
+    {
+      const auto &nodes = foundation.nodes();
+      reference.resize(nodes.size());
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          reference[k][c] = u[nodes[k].dofs[c]];
+    }
+
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    RigidFriction<dim>::increments(const VectorType &u, std::vector<bool> &has) const
+    {
+      const auto                 &nodes = foundation.nodes();
+      std::vector<Tensor<1, dim>> du(nodes.size());
+      has.assign(nodes.size(), true);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          du[k][c] = u[nodes[k].dofs[c]] - reference[k][c];
+      return du;
+    }
+
+    template <int dim>
+    void
+    RigidFriction<dim>::coupling(const unsigned int                    k,
+                                 typename NodeFriction<dim>::Coupling &c) const
+    {
+      c.dofs.assign(foundation.nodes()[k].dofs.begin(),
+                    foundation.nodes()[k].dofs.begin() + dim);
+      c.components.resize(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        c.components[d] = d;
+      c.factors.assign(dim, 1.);
+    }
+
+    template <int dim>
+    std::vector<types::global_dof_index>
+    RigidFriction<dim>::history_dofs() const
+    {
+      // The DoFs the foundation keeps its force record on.
+      return foundation.force_dofs();
+    }
+
+    template <int dim>
     std::unique_ptr<FrictionTerm<dim>>
-    create_friction_term(const FrictionParameters &parameters, const Model<dim> &model)
+    create_friction_term(const FrictionParameters &parameters, Model<dim> &model)
     {
       if (!parameters.active())
         return nullptr;
       if (const auto *rigid = dynamic_cast<const RigidFoundation<dim> *>(&model))
         return std::make_unique<RigidFriction<dim>>(parameters, *rigid);
+      if (auto *two_body = dynamic_cast<TwoBodyContact<dim> *>(&model))
+        return std::make_unique<TwoBodyFriction<dim>>(parameters, model, *two_body);
+      if (auto *two_pass = dynamic_cast<TwoPassContact<dim> *>(&model))
+        return std::make_unique<TwoBodyFriction<dim>>(parameters, model,
+                                                      two_pass->first_pass());
       throw InputError("Contact > Friction > Coefficient",
                        "Coulomb friction is available against the rigid foundation "
-                       "(Contact > Type = rigid foundation); with Contact > Type = " +
-                         model.type_name() +
-                         " it is not yet (doc/friction.md): set 0 (frictionless)");
+                       "and between two bodies; with Contact > Type = " +
+                         model.type_name() + " it is not (doc/friction.md): set 0");
     }
 
     template <int dim>
@@ -322,13 +413,15 @@ namespace Signorini
 
     template class FrictionTerm<2>;
     template class FrictionTerm<3>;
+    template class NodeFriction<2>;
+    template class NodeFriction<3>;
     template class RigidFriction<2>;
     template class RigidFriction<3>;
     template class FrictionObjective<2>;
     template class FrictionObjective<3>;
     template std::unique_ptr<FrictionTerm<2>>
-    create_friction_term(const FrictionParameters &, const Model<2> &);
+    create_friction_term(const FrictionParameters &, Model<2> &);
     template std::unique_ptr<FrictionTerm<3>>
-    create_friction_term(const FrictionParameters &, const Model<3> &);
+    create_friction_term(const FrictionParameters &, Model<3> &);
   } // namespace Contact
 } // namespace Signorini

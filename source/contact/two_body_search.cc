@@ -114,6 +114,156 @@ namespace Signorini
       return pairs;
     }
 
+    namespace
+    {
+      /// The closest point of the face @p face to @p x: its vertex weights
+      /// and body 2's outward normal there. Returns the distance.
+      double
+      closest_point(const IndicatorFace<2> &face,
+                    const Point<2>         &x,
+                    std::array<double, 2>  &shape,
+                    Tensor<1, 2>           &normal)
+      {
+        const Tensor<1, 2> e  = face.face[1] - face.face[0];
+        const double       t  = std::clamp((x - face.face[0]) * e / e.norm_square(), 0., 1.);
+        shape                 = {{1. - t, t}};
+        normal                = Tensor<1, 2>({-e[1], e[0]}) / e.norm();
+        return (x - (face.face[0] + t * e)).norm();
+      }
+
+      double
+      closest_point(const IndicatorFace<3> &face,
+                    const Point<3>         &x,
+                    std::array<double, 4>  &shape,
+                    Tensor<1, 3>           &normal)
+      {
+        // The bilinear face X(a, b) through the cyclic vertices Q0..Q3;
+        // Gauss-Newton on |X - x|^2 with (a, b) kept in the unit square.
+        const auto &Q = face.face;
+        double      a = 0.5, b = 0.5;
+        Tensor<1, 3> Xa, Xb;
+        for (unsigned int it = 0; it < 8; ++it)
+          {
+            const Point<3> X = (1 - a) * (1 - b) * Q[0] + a * (1 - b) * Q[1] +
+                               a * b * Q[2] + (1 - a) * b * Q[3];
+            Xa = (1 - b) * (Q[1] - Q[0]) + b * (Q[2] - Q[3]);
+            Xb = (1 - a) * (Q[3] - Q[0]) + a * (Q[2] - Q[1]);
+            const Tensor<1, 3> r   = x - X;
+            const double       A11 = Xa * Xa, A12 = Xa * Xb, A22 = Xb * Xb;
+            const double       det = A11 * A22 - A12 * A12;
+            if (!(det > 0.))
+              break;
+            const double da = (A22 * (Xa * r) - A12 * (Xb * r)) / det;
+            const double db = (A11 * (Xb * r) - A12 * (Xa * r)) / det;
+            a               = std::clamp(a + da, 0., 1.);
+            b               = std::clamp(b + db, 0., 1.);
+            if (std::abs(da) + std::abs(db) < 1e-12)
+              break;
+          }
+        shape = {{(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b}};
+        Xa    = (1 - b) * (Q[1] - Q[0]) + b * (Q[2] - Q[3]);
+        Xb    = (1 - a) * (Q[3] - Q[0]) + a * (Q[2] - Q[1]);
+        normal = cross_product_3d(Xa, Xb);
+        normal /= normal.norm();
+        Point<3> X;
+        for (unsigned int v = 0; v < 4; ++v)
+          X += shape[v] * Q[v];
+        return (x - X).norm();
+      }
+    } // namespace
+
+    template <int dim>
+    std::vector<typename TwoBodyContact<dim>::Partner>
+    TwoBodyContact<dim>::node_partners(const VectorType                      &u,
+                                       const std::vector<IndicatorFace<dim>> &faces) const
+    {
+      const auto vertex_normals = this->vertex_normals(faces);
+      const auto tree = face_tree(faces, 1.);
+      std::vector<Partner>                                   partners(node_points.size());
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      for (unsigned int k = 0; k < node_points.size(); ++k)
+        {
+          const Point<dim> x = position(node_points[k], u);
+          hits.clear();
+          tree.query(bgi::intersects(x), std::back_inserter(hits));
+          double best = std::numeric_limits<double>::infinity();
+          for (const auto &hit : hits)
+            {
+              Partner        p;
+              Tensor<1, dim> face_normal;
+              const double   d = closest_point(faces[hit.second], x, p.shape, face_normal);
+              if (d < best)
+                {
+                  best   = d;
+                  p.face = hit.second;
+                  partners[k] = p;
+                }
+            }
+        }
+      set_normals(faces, partners, vertex_normals);
+      return partners;
+    }
+
+    template <int dim>
+    std::map<types::global_dof_index, Tensor<1, dim>>
+    TwoBodyContact<dim>::vertex_normals(const std::vector<IndicatorFace<dim>> &faces) const
+    {
+      // (Continuous normals: a node over a vertex would otherwise take one
+      // face's normal or the other's from one outer iteration to the next.)
+      std::map<types::global_dof_index, Tensor<1, dim>> vertex_normals;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        {
+          std::array<double, n_face_vertices> shape;
+          Tensor<1, dim>                      n;
+          Point<dim>                          centre;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            centre += faces[f].face[v] / static_cast<double>(n_face_vertices);
+          closest_point(faces[f], centre, shape, n);
+          Tensor<1, dim> inward;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            inward += faces[f].opposite[v] - faces[f].face[v];
+          if (n * inward > 0.)
+            n = -n;
+          for (unsigned int v = 0; v < n_face_vertices; ++v)
+            vertex_normals[faces2[f].dofs[v * dim]] += faces2[f].h * n;
+        }
+      return vertex_normals;
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::set_normals(
+      const std::vector<IndicatorFace<dim>>                   &faces,
+      std::vector<Partner>                                    &partners,
+      const std::map<types::global_dof_index, Tensor<1, dim>> &normals) const
+    {
+      const auto &vertex_normals = normals.empty() ? this->vertex_normals(faces) : normals;
+      for (auto &p : partners)
+        if (p.face >= 0)
+          {
+            p.normal = Tensor<1, dim>();
+            for (unsigned int v = 0; v < n_face_vertices; ++v)
+              p.normal += p.shape[v] * vertex_normals.at(faces2[p.face].dofs[v * dim]);
+            p.normal /= p.normal.norm();
+          }
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    TwoBodyContact<dim>::partner_displacement(const std::vector<IndicatorFace<dim>> &faces,
+                                              const Partner &partner) const
+    {
+      Tensor<1, dim> d;
+      if (partner.face < 0)
+        return d;
+      const auto &reference = faces2[partner.face].X;
+      const auto &current   = faces[partner.face].face;
+      for (unsigned int v = 0; v < n_face_vertices; ++v)
+        for (unsigned int c = 0; c < dim; ++c)
+          d[c] += partner.shape[v] * (current[v][c] - reference[v * dim + c]);
+      return d;
+    }
+
     template <int dim>
     void
     TwoBodyContact<dim>::add_sparsity(TrilinosWrappers::SparsityPattern &sparsity,
@@ -134,6 +284,16 @@ namespace Signorini
                       faces2[pair.second].dofs.end());
           c.add_entries_local_to_global(dofs, sparsity, false);
         }
+      node_pattern.clear();
+      for (const auto &coupling : node_couplings)
+        {
+          node_pattern.insert(coupling);
+          dofs.assign(nodes()[coupling.first].dofs.begin(),
+                      nodes()[coupling.first].dofs.end());
+          dofs.insert(dofs.end(), faces2[coupling.second].dofs.begin(),
+                      faces2[coupling.second].dofs.begin() + n_face_vertices * dim);
+          c.add_entries_local_to_global(dofs, sparsity, false);
+        }
       stats.pattern_pairs = Utilities::MPI::sum(
         static_cast<unsigned long long>(pattern.size()), dof_handler.get_communicator());
       ++stats.pattern_builds;
@@ -151,6 +311,9 @@ namespace Signorini
             missing = true;
             break;
           }
+      for (const auto &coupling : node_couplings)
+        if (node_pattern.count(coupling) == 0)
+          missing = true;
       return Utilities::MPI::logical_or(missing, dof_handler.get_communicator());
     }
 
@@ -353,6 +516,12 @@ namespace Signorini
     template void TwoBodyContact<3>::add_sparsity(TrilinosWrappers::SparsityPattern &sparsity, const AffineConstraints<double> &constraints, const VectorType &u);
     template bool TwoBodyContact<2>::needs_new_pattern(const VectorType &u);
     template bool TwoBodyContact<3>::needs_new_pattern(const VectorType &u);
+    template std::vector<typename TwoBodyContact<2>::Partner> TwoBodyContact<2>::node_partners(const VectorType &u, const std::vector<IndicatorFace<2>> &faces) const;
+    template std::vector<typename TwoBodyContact<3>::Partner> TwoBodyContact<3>::node_partners(const VectorType &u, const std::vector<IndicatorFace<3>> &faces) const;
+    template void TwoBodyContact<2>::set_normals(const std::vector<IndicatorFace<2>> &, std::vector<Partner> &, const std::map<types::global_dof_index, Tensor<1, 2>> &) const;
+    template void TwoBodyContact<3>::set_normals(const std::vector<IndicatorFace<3>> &, std::vector<Partner> &, const std::map<types::global_dof_index, Tensor<1, 3>> &) const;
+    template Tensor<1, 2> TwoBodyContact<2>::partner_displacement(const std::vector<IndicatorFace<2>> &faces, const Partner &partner) const;
+    template Tensor<1, 3> TwoBodyContact<3>::partner_displacement(const std::vector<IndicatorFace<3>> &faces, const Partner &partner) const;
     template bool TwoBodyContact<2>::admissible(const VectorType &u) const;
     template bool TwoBodyContact<3>::admissible(const VectorType &u) const;
     template double TwoBodyContact<2>::max_step(const VectorType &u, const VectorType &d) const;

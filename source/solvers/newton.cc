@@ -291,6 +291,7 @@ namespace Signorini
                    const double                       tolerance,
                    const double                       energy_scale,
                    const double                       last_decrease,
+                   const bool                         at_least_once,
                    NewtonMinimizer::Statistics       &statistics)
     {
       if (!std::isfinite(residual))
@@ -301,7 +302,7 @@ namespace Signorini
       const bool energy_converged =
         (it > 0 &&
          std::abs(last_decrease) <= parameters.energy_tolerance * energy_scale);
-      if (residual <= tolerance && (it == 0 || energy_converged ||
+      if (residual <= tolerance && ((it == 0 && !at_least_once) || energy_converged ||
                                     residual <= parameters.absolute_tolerance))
         {
           statistics.converged = true;
@@ -611,7 +612,7 @@ namespace Signorini
         statistics.evaluation  = e;
         print_iteration(progress, it, residual, e);
         if (iteration_ends(parameters, it, residual, tolerance, energy_scale,
-                           last_decrease, statistics))
+                           last_decrease, at_least_once, statistics))
           return statistics;
 
         const unsigned int regularized_before =

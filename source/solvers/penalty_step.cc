@@ -72,10 +72,16 @@ namespace Signorini
     if (ipopt)
       continuation.stage_tolerance = 0.;
     NewtonMinimizer               newton = this->newton();
-    const double                  mu_start =
-      continuation.restart_each_step ?
-        mu0 :
-        std::max(mu0, last_mu / continuation.step_reduction);
+    // A re-solve of the friction loop starts at the penalty the last
+    // solve ended with: from a lower one its first stage would leave the
+    // converged state and could end in another of the penalised
+    // problem's minima, so that the outer loop cycles between two states.
+    const double mu_start =
+      this->friction_resolve ?
+        last_mu :
+        (continuation.restart_each_step ?
+           mu0 :
+           std::max(mu0, last_mu / continuation.step_reduction));
     const typename Contact::PenaltyObjective<dim>::PatternBuilder rebuild =
       [this](const VectorType &u) {
         TimerOutput::Scope scope(this->timer, "sparsity pattern");

@@ -194,6 +194,8 @@ namespace Signorini
   {
     NewtonMinimizer newton(parameters.solver.newton, linear_solver, progress, timer);
     newton.set_length_scale(scene.size);
+    if (friction_resolve)
+      newton.iterate_at_least_once();
     return newton;
   }
 
@@ -222,6 +224,8 @@ namespace Signorini
                            const double                 time,
                            StepStatistics              &stats)
   {
+    if (friction_resolve)
+      return true;
     carry_along(time);
     if (!scene.bc.has_prescribed_motion())
       return true;
@@ -294,7 +298,9 @@ namespace Signorini
         stats = StepStatistics();
         if (m > 0)
           prepare_friction_resolve(record.friction_change);
+        friction_resolve           = m > 0;
         const bool ok              = solve(time, stats, record);
+        friction_resolve           = false;
         record.friction_iterations = m + 1;
         if (!ok)
           break;
@@ -406,17 +412,16 @@ namespace Signorini
         if (!contact)
           throw InputError(key, "friction needs contact (Contact > Type); the scene "
                                 "declares none: set 0");
-        if (!p.contact.node_wise_constraints())
-          throw InputError(key, "Coulomb friction is available against the rigid "
-                                "foundation; with Contact > Type = " +
-                                  p.contact.type() +
-                                  " it is not yet (doc/friction.md): set 0");
         if (p.refinement.cycles > 0 || p.refinement.coarser_mesh_estimate)
           throw InputError(key, "friction follows the load path, and refinement "
                                 "cycles (Mesh refinement > Number of cycles, or "
                                 "Estimate from a coarser mesh) re-solve the last load "
                                 "from another mesh's state: not yet with friction "
                                 "(doc/friction.md)");
+        if (m == Method::ipopt && !p.contact.node_wise_constraints())
+          throw InputError(key, "between two bodies, friction works with Solver > "
+                                "Method = newton-penalty; Ipopt as the penalty stages' "
+                                "minimiser does not take it (doc/friction.md)");
       }
     if (m == Method::ipopt && n_ranks > 1)
       throw InputError("Solver > Method",

@@ -154,21 +154,21 @@ namespace Signorini
     };
 
     /**
-     * Friction against the rigid foundation, node by node: at node k the
-     * slip is s_k = T_k^T (u_k - u_n,k), the normal is grad g_k/|grad g_k|
-     * and lambda_k = F_k |grad g_k| with F_k the model's force record
-     * (the interior point multiplier or the penalty force), so lambda_k is
-     * the node's normal contact force. Its term lives in the node's own
-     * dim x dim block: no new sparsity. The outer loop's lambda is
-     * Anderson-accelerated (AndersonMixing, depth 5).
+     * Friction at the nodes of a contact boundary: node k carries the
+     * lagged normal force lambda_k, the tangent basis T_k and its own
+     * slip length, and its slip is s_k = T_k^T du_k with du_k the step's
+     * relative displacement increment, a linear combination of DoF values
+     * (coupling()). What is common to every such term lives here: the
+     * extrapolation of lambda from the last two converged steps
+     * (start_step()), the Anderson-accelerated outer loop (update(),
+     * AndersonMixing of depth 5), the open threshold (below 1e-6 of the
+     * largest lambda), the assembly of sum_k D_k and the checkpointed
+     * history. A derived class says where lambda, T and du come from.
      */
     template <int dim>
-    class RigidFriction : public FrictionTerm<dim>
+    class NodeFriction : public FrictionTerm<dim>
     {
     public:
-      RigidFriction(const FrictionParameters &parameters,
-                    const RigidFoundation<dim> &foundation);
-
       void
       start_step(const VectorType &u, const double time) override;
 
@@ -187,32 +187,118 @@ namespace Signorini
       std::vector<typename FrictionTerm<dim>::PointSample>
       point_samples(const VectorType &u) const override;
 
-      const BoundaryNodes<dim> &
-      boundary() const override;
-
       void
       save_state(OutputArchive &archive, MeshState &mesh) const override;
       void
       load_state(InputArchive &archive, MeshState &mesh) override;
 
+    protected:
+      NodeFriction(const FrictionParameters &parameters, const MPI_Comm comm);
+
+      /// How node k's relative increment du_k depends on the DoFs:
+      /// du_k[components[j]] = sum_j factors[j] u[dofs[j]] + const.
+      struct Coupling
+      {
+        std::vector<types::global_dof_index> dofs;
+        std::vector<unsigned int>            components;
+        std::vector<double>                  factors;
+      };
+
+      /**
+       * The normal force and the tangent basis of every node (this
+       * rank's, in boundary() order) at the ghosted state @p u, from the
+       * contact model's force record (collective).
+       */
+      virtual void
+      lag(const VectorType               &u,
+          std::vector<double>            &normal_forces,
+          std::vector<TangentBasis<dim>> &bases) = 0;
+
+      /// Keep what the slip is measured from: the state @p u at the
+      /// step's start (collective).
+      virtual void
+      set_reference(const VectorType &u) = 0;
+
+      /// The relative displacement increment du_k of every node since
+      /// set_reference() at the ghosted @p u (collective). A node whose
+      /// term is off (no partner) gets has[k] = false.
+      virtual std::vector<Tensor<1, dim>>
+      increments(const VectorType &u, std::vector<bool> &has) const = 0;
+
+      /// Node k's coupling (called only for nodes with has[k]).
+      virtual void
+      coupling(const unsigned int k, Coupling &c) const = 0;
+
+      /// The constraints to condense node terms with (collective; by
+      /// default @p constraints).
+      virtual const AffineConstraints<double> &
+      condensation(const AffineConstraints<double> &constraints) const
+      {
+        return constraints;
+      }
+
+      /// One DoF per node (this rank's) to keep the history on in a
+      /// checkpoint.
+      virtual std::vector<types::global_dof_index>
+      history_dofs() const = 0;
+
     private:
-      /// lambda and T of every node from the model's forces at @p u.
+      /// lambda and T of every node at @p u (lag() and the open threshold).
       void
-      lag(const VectorType &u);
+      lag_all(const VectorType &u);
 
-      Tensor<1, dim>
-      increment(const unsigned int k, const VectorType &u) const;
-
-      const RigidFoundation<dim>    &foundation;
-      std::vector<double>            lambda;
-      AndersonMixing                 mixing; // of lambda over the outer loop
+      std::vector<double>              lambda;
+      AndersonMixing                   mixing; // of lambda over the outer loop
+      double                           last_change = 0.; // update()'s last
       // The lagged forces of the last two converged steps and their load
       // times (oldest first), for start_step()'s extrapolation.
       std::vector<std::vector<double>> history;
       std::vector<double>              history_times;
-      std::vector<TangentBasis<dim>> basis;
-      std::vector<Tensor<1, dim>>    reference; // u_n at the nodes
-      std::vector<FrictionLaw<dim>>  laws;      // one slip length per node
+      std::vector<TangentBasis<dim>>   basis;
+      std::vector<FrictionLaw<dim>>    laws; // one slip length per node
+      bool                             started = false; // start_step() seen
+    };
+
+    /**
+     * Friction against the rigid foundation, node by node: at node k the
+     * slip is s_k = T_k^T (u_k - u_n,k), the normal is grad g_k/|grad g_k|
+     * and lambda_k = F_k |grad g_k| with F_k the model's force record
+     * (the interior point multiplier or the penalty force), so lambda_k is
+     * the node's normal contact force. Its term lives in the node's own
+     * dim x dim block: no new sparsity.
+     */
+    template <int dim>
+    class RigidFriction : public NodeFriction<dim>
+    {
+    public:
+      RigidFriction(const FrictionParameters &parameters,
+                    const RigidFoundation<dim> &foundation);
+
+      const BoundaryNodes<dim> &
+      boundary() const override;
+
+    protected:
+      void
+      lag(const VectorType               &u,
+          std::vector<double>            &normal_forces,
+          std::vector<TangentBasis<dim>> &bases) override;
+
+      void
+      set_reference(const VectorType &u) override;
+
+      std::vector<Tensor<1, dim>>
+      increments(const VectorType &u, std::vector<bool> &has) const override;
+
+      void
+      coupling(const unsigned int k,
+               typename NodeFriction<dim>::Coupling &c) const override;
+
+      std::vector<types::global_dof_index>
+      history_dofs() const override;
+
+    private:
+      const RigidFoundation<dim>  &foundation;
+      std::vector<Tensor<1, dim>> reference; // u_n at the nodes
     };
 
     /**
@@ -222,7 +308,7 @@ namespace Signorini
      */
     template <int dim>
     std::unique_ptr<FrictionTerm<dim>>
-    create_friction_term(const FrictionParameters &parameters, const Model<dim> &model);
+    create_friction_term(const FrictionParameters &parameters, Model<dim> &model);
 
     /**
      * An objective plus the friction term: what a step solver minimises

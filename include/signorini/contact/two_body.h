@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -351,11 +352,85 @@ namespace Signorini
                     const std::function<double(const Point<dim> &)> &reference_pressure,
                     const std::string &extra_header = "") const override;
 
-    private:
       static constexpr unsigned int n_face_vertices =
         IndicatorFace<dim>::n_face_vertices;
       static constexpr unsigned int n_target_dofs =
         IndicatorFace<dim>::n_variables - dim;
+
+      /// Current face geometry of every body 2 face (collective).
+      std::vector<IndicatorFace<dim>>
+      current_faces(const VectorType &u) const;
+
+      /// The point of body 2's contact surface that a node of Gamma_C
+      /// lies on or over: what friction measures the node's slip against.
+      struct Partner
+      {
+        int                                 face = -1; // none
+        std::array<double, n_face_vertices> shape{};   // vertex weights
+        Tensor<1, dim>                      normal;    // body 2's, outward
+      };
+
+      /**
+       * For every node of Gamma_C (this rank's, nodes() order) at the
+       * ghosted state @p u, with @p faces = current_faces(u): the closest
+       * point of the faces whose box, grown by one face size, holds the
+       * node (2D: on the segment; 3D: on the bilinear face), its vertex
+       * weights and body 2's outward unit normal there (away from the
+       * opposite face). A node near no face gets face = -1.
+       */
+      std::vector<Partner>
+      node_partners(const VectorType                      &u,
+                    const std::vector<IndicatorFace<dim>> &faces) const;
+
+      /**
+       * Set the normals of @p partners (their faces and weights kept) to
+       * body 2's outward normal there for the faces @p faces: the
+       * vertex normals (vertex_normals(), computed here if @p normals is
+       * empty) interpolated with the weights, normalised.
+       */
+      void
+      set_normals(const std::vector<IndicatorFace<dim>>                   &faces,
+                  std::vector<Partner>                                    &partners,
+                  const std::map<types::global_dof_index, Tensor<1, dim>> &normals = {}) const;
+
+      /// Body 2's displacement at @p partner when its faces are @p faces
+      /// (current_faces() at some state).
+      Tensor<1, dim>
+      partner_displacement(const std::vector<IndicatorFace<dim>> &faces,
+                           const Partner                         &partner) const;
+
+      /// The DoF of component @p c of vertex @p v of body 2's face @p f.
+      types::global_dof_index
+      face_vertex_dof(const unsigned int f, const unsigned int v, const unsigned int c) const
+      {
+        return faces2[f].dofs[v * dim + c];
+      }
+
+      /**
+       * Couplings (node of Gamma_C, body 2 face) that a term beyond the
+       * penalty writes into the Hessian (friction): add_sparsity() adds
+       * them, and needs_new_pattern() asks for a new pattern when one is
+       * missing. Set on this rank's nodes.
+       */
+      void
+      set_node_couplings(std::vector<std::pair<unsigned int, unsigned int>> couplings)
+      {
+        node_couplings = std::move(couplings);
+      }
+
+      /// @p constraints, completed on several ranks with the lines of the
+      /// body 2 DoFs that other ranks own (collective).
+      const AffineConstraints<double> &
+      assembly_constraints(const AffineConstraints<double> &constraints) const;
+
+    private:
+      /// Body 2's vertex normals for the faces @p faces, keyed by the
+      /// vertex's first DoF: the faces' outward normals (away from the
+      /// opposite face) at their centres, weighted by the faces' sizes and
+      /// summed at each vertex (not normalised), so that a point's normal
+      /// varies continuously along the surface.
+      std::map<types::global_dof_index, Tensor<1, dim>>
+      vertex_normals(const std::vector<IndicatorFace<dim>> &faces) const;
 
       /// A point of Gamma_C where Phi is evaluated: x = X + sum_j
       /// shape_j u_j e_{component_j}.
@@ -434,10 +509,6 @@ namespace Signorini
       FaceTree
       face_tree(const std::vector<IndicatorFace<dim>> &faces, const double margin) const;
 
-      /// Current face geometry of every body 2 face (collective).
-      std::vector<IndicatorFace<dim>>
-      current_faces(const VectorType &u) const;
-
       /// Pairs (point, face) whose face box, grown by @p margin face
       /// sizes, contains the point; with @p positive_only only those
       /// where Phi's face term is > 0.
@@ -465,11 +536,6 @@ namespace Signorini
       penetration_ratio(const std::vector<Point<dim>>         &x,
                         const std::vector<IndicatorFace<dim>> &faces,
                         std::vector<double>                   *depths = nullptr) const;
-
-      /// @p constraints, completed on several ranks with the lines of the
-      /// body 2 DoFs that other ranks own.
-      const AffineConstraints<double> &
-      assembly_constraints(const AffineConstraints<double> &constraints) const;
 
       std::vector<double>
       node_pressures(const std::vector<double> &forces) const;
@@ -500,6 +566,9 @@ namespace Signorini
       IndexSet            relevant, extra_rows;
 
       std::set<std::pair<unsigned int, unsigned int>> pattern;
+      // set_node_couplings()'s, and those in the sparsity pattern.
+      std::vector<std::pair<unsigned int, unsigned int>> node_couplings;
+      std::set<std::pair<unsigned int, unsigned int>>    node_pattern;
       mutable PairStatistics                          stats;
       bool                                            convexified = false;
       bool                                            lumped_reaction = false;

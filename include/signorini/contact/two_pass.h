@@ -205,6 +205,14 @@ namespace Signorini
         return first.force_dofs();
       }
 
+      /// The first pass: body 1's Gamma_C against body 2 (what friction
+      /// pairs the nodes of Gamma_C with).
+      TwoBodyContact<dim> &
+      first_pass()
+      {
+        return first;
+      }
+
     private:
       /// The second pass's forces (body 2's nodes, then body 1's) added
       /// to @p forces in the first pass's layout.

@@ -110,6 +110,19 @@ namespace Signorini
     }
 
     /**
+     * Take at least one Newton step even from a start that already meets
+     * the tolerance: the re-solves of the friction loop, whose normal
+     * forces (stiff functions of the state) the outer loop compares to
+     * 1e-6, start from a state that met the tolerance for the last lag;
+     * one more quadratic step resolves them far below it.
+     */
+    void
+    iterate_at_least_once()
+    {
+      at_least_once = true;
+    }
+
+    /**
      * Stop at the relative residual tolerance @p tolerance and at an
      * energy decrease of @p tolerance times the energy scale, where these
      * are looser than the parameter file's (a penalty stage that only
@@ -161,7 +174,8 @@ namespace Signorini
                       Statistics                      &statistics);
 
     Parameters          parameters;
-    double              length_scale = 0.;
+    double              length_scale  = 0.;
+    bool                at_least_once = false;
     const LinearSolver &linear_solver;
     ConditionalOStream &progress;
     TimerOutput        &timer;

@@ -170,6 +170,13 @@ namespace Signorini
     std::string
     friction_failure(const double change, const unsigned int iterations) const;
 
+    /// True during the re-solves of the friction loop: they start from a
+    /// converged state at the step's load time, so predict() does
+    /// nothing (its tangent step would only perturb that state by up to
+    /// the inner tolerance, and with it the normal forces the outer loop
+    /// compares).
+    bool friction_resolve = false;
+
     /// Called before each re-solve of the friction loop, from a converged
     /// state whose lagged normal forces changed by @p change (relative).
     virtual void
