@@ -15,7 +15,10 @@ namespace Signorini
      * contact state @p summary: the friction force, the dissipated energy,
      * the sticking and slipping points and, with a Mindlin reference,
      * the stick zone and the tangential traction against
-     * Cattaneo-Mindlin's under the measured load ratio Q/(mu P).
+     * Cattaneo-Mindlin's under the measured load ratio Q/(mu P), and
+     * Mindlin-Deresiewicz's when the load has turned back (the load ratios
+     * of the @p previous steps and this one, signed along the direction of
+     * the largest friction force among them: Mindlin::LoadPath).
      */
     template <int dim>
     std::vector<Quantity>
@@ -24,7 +27,7 @@ namespace Signorini
       const std::vector<typename Contact::FrictionTerm<dim>::PointSample> &points,
       const typename Contact::Model<dim>::StateSummary              &summary,
       const Contact::HertzReference                                 &hertz,
-      const double                                                   previous_dissipation,
+      const std::vector<Report::Step>                               &previous,
       Report::Step                                                  &record)
     {
       const MPI_Comm comm = friction.boundary().get_communicator();
@@ -45,7 +48,8 @@ namespace Signorini
       for (unsigned int d = 0; d < dim; ++d)
         record.friction_force[d] = totals.force[d];
       record.dissipated_energy       = totals.dissipation;
-      record.total_dissipated_energy = previous_dissipation + totals.dissipation;
+      record.total_dissipated_energy =
+        (previous.empty() ? 0. : previous.back().total_dissipated_energy) + totals.dissipation;
       record.stick_points            = totals.n_stick;
       record.slip_points             = totals.n_slip;
 
@@ -72,8 +76,36 @@ namespace Signorini
       const double P     = std::abs(summary.total_force[dim - 1]);
       const double ratio = P > 0. ? Q / (mu * P) : 0.;
       add("tangential_load_ratio", ratio);
+      // The load path: each step's friction force along the line of the
+      // largest one so far (a load that turns back stays on its line).
+      Tensor<1, dim> line;
+      double         largest = Q;
+      if (Q > 0.)
+        line = totals.force / Q;
+      for (const auto &s : previous)
+        {
+          Tensor<1, dim> f;
+          for (unsigned int d = 0; d < dim; ++d)
+            f[d] = s.friction_force[d];
+          if (f.norm() > largest)
+            {
+              largest = f.norm();
+              line    = f / largest;
+            }
+        }
+      Contact::Mindlin::LoadPath path;
+      const auto signed_ratio = [&](const Tensor<1, 3> &force, const Tensor<1, 3> &normal) {
+        Tensor<1, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = force[d];
+        const double p = std::abs(normal[dim - 1]);
+        return p > 0. ? f * line / (mu * p) : 0.;
+      };
+      for (const auto &s : previous)
+        path.add(signed_ratio(s.friction_force, s.contact_force_vector));
+      path.add(signed_ratio(record.friction_force, record.contact_force_vector));
       const double a     = hertz.half_width();
-      const double c_ref = a * Contact::Mindlin::stick_ratio(ratio, hertz.point_contact());
+      const double c_ref = a * path.stick_ratio(hertz.point_contact());
       // The stick zone's edges: midway between its outermost sticking
       // point and the nearest slipping point beyond it. A line contact
       // takes the half of the zone's width (its centre may shift with the
@@ -120,21 +152,18 @@ namespace Signorini
       record.tangential_load_ratio  = ratio;
       record.stick_radius           = radius;
       record.stick_radius_reference = c_ref;
-      // The tangential traction along the friction force against
-      // Mindlin's q(r), relative L2 over the contact nodes (tributary
-      // weights).
-      Tensor<1, dim> direction;
-      if (Q > 0.)
-        direction = totals.force / Q;
+      // The tangential traction along the load's line against Mindlin's
+      // q(r) (Mindlin-Deresiewicz's after a reversal), relative L2 over
+      // the contact nodes (tributary weights).
       const double mu_p0  = mu * hertz.peak_pressure();
       double       error2 = 0., norm2 = 0.;
       for (const auto &p : points)
         {
           if (p.weight <= 0.)
             continue;
-          const double q_h = p.force * direction / p.weight;
-          const double q   = Contact::Mindlin::traction(std::abs(hertz.distance(p.X)), a,
-                                                      c_ref, mu_p0);
+          const double q_h = p.force * line / p.weight;
+          const double q   = path.traction(std::abs(hertz.distance(p.X)), a, mu_p0,
+                                         hertz.point_contact());
           error2 += p.weight * (q_h - q) * (q_h - q);
           norm2 += p.weight * q * q;
         }
@@ -154,7 +183,7 @@ namespace Signorini
                      Report::Step                  &record,
                      const std::string             &profile_file,
                      const Contact::FrictionTerm<dim> *friction,
-                     const double                      previous_dissipation)
+                     const std::vector<Report::Step>  &previous)
   {
     std::vector<Quantity> quantities;
     // The nodes' state once, for the summary, the Hertz samples and the
@@ -237,7 +266,7 @@ namespace Signorini
     for (unsigned int k = 0; k < points.size(); ++k)
       with_friction[k].extra = Contact::FrictionTerm<dim>::profile_values(points[k]);
     for (const auto &q : friction_quantities(*friction, points, summary, hertz,
-                                             previous_dissipation, record))
+                                             previous, record))
       quantities.push_back(q);
     contact.samples().write_profile(profile_file, u, contact.forces(), with_friction,
                                     reference, Contact::FrictionTerm<dim>::profile_header());
@@ -247,9 +276,11 @@ namespace Signorini
   template std::vector<Quantity>
   contact_quantities<2>(const Contact::Model<2> &, const Contact::HertzReference &,
                         const VectorType &, Report::Step &, const std::string &,
-                        const Contact::FrictionTerm<2> *, double);
+                        const Contact::FrictionTerm<2> *,
+                        const std::vector<Report::Step> &);
   template std::vector<Quantity>
   contact_quantities<3>(const Contact::Model<3> &, const Contact::HertzReference &,
                         const VectorType &, Report::Step &, const std::string &,
-                        const Contact::FrictionTerm<3> *, double);
+                        const Contact::FrictionTerm<3> *,
+                        const std::vector<Report::Step> &);
 } // namespace Signorini
