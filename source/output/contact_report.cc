@@ -74,23 +74,32 @@ namespace Signorini
       const double mu    = parameters.coefficient;
       const double Q     = totals.force.norm();
       const double P     = std::abs(summary.total_force[dim - 1]);
-      const double ratio = P > 0. ? Q / (mu * P) : 0.;
-      add("tangential_load_ratio", ratio);
-      // The load path: each step's friction force along the line of the
-      // largest one so far (a load that turns back stays on its line).
+      const double ratio_of_norm = P > 0. ? Q / (mu * P) : 0.;
+      // The load path: each step's friction force along the load's line,
+      // 'Load direction' or that of the largest friction force so far (a
+      // load that turns back stays on its line).
       Tensor<1, dim> line;
-      double         largest = Q;
-      if (Q > 0.)
-        line = totals.force / Q;
-      for (const auto &s : previous)
+      if (!parameters.mindlin_load_direction.empty())
         {
-          Tensor<1, dim> f;
-          for (unsigned int d = 0; d < dim; ++d)
-            f[d] = s.friction_force[d];
-          if (f.norm() > largest)
+          for (unsigned int d = 0; d < dim && d < parameters.mindlin_load_direction.size(); ++d)
+            line[d] = parameters.mindlin_load_direction[d];
+          line /= line.norm();
+        }
+      else
+        {
+          double largest = Q;
+          if (Q > 0.)
+            line = totals.force / Q;
+          for (const auto &s : previous)
             {
-              largest = f.norm();
-              line    = f / largest;
+              Tensor<1, dim> f;
+              for (unsigned int d = 0; d < dim; ++d)
+                f[d] = s.friction_force[d];
+              if (f.norm() > largest)
+                {
+                  largest = f.norm();
+                  line    = f / largest;
+                }
             }
         }
       Contact::Mindlin::LoadPath path;
@@ -104,13 +113,19 @@ namespace Signorini
       for (const auto &s : previous)
         path.add(signed_ratio(s.friction_force, s.contact_force_vector));
       path.add(signed_ratio(record.friction_force, record.contact_force_vector));
+      // Along a given direction the signed ratio's magnitude; otherwise
+      // that of the whole friction force, as before.
+      const double ratio =
+        parameters.mindlin_load_direction.empty() ?
+          ratio_of_norm :
+          std::abs(signed_ratio(record.friction_force, record.contact_force_vector));
+      add("tangential_load_ratio", ratio);
       const double a     = hertz.half_width();
       const double c_ref = a * path.stick_ratio(hertz.point_contact());
       // The stick zone's edges: midway between its outermost sticking
       // point and the nearest slipping point beyond it. A line contact
       // takes the half of the zone's width (its centre may shift with the
-      // tangential load), a point contact the radius from the contact's
-      // centre.
+      // tangential load); a point contact, the radius of its area (below).
       const auto position = [&hertz](const Point<dim> &X) {
         return hertz.point_contact() ? std::abs(hertz.distance(X)) : hertz.distance(X);
       };
@@ -139,9 +154,23 @@ namespace Signorini
       slip_hi = Utilities::MPI::min(slip_hi, comm);
       const double edge_hi = slip_hi < big ? 0.5 * (stick_hi + slip_hi) : stick_hi;
       const double edge_lo = slip_lo > -big ? 0.5 * (stick_lo + slip_lo) : stick_lo;
-      double       radius  = 0.;
+      // A point contact's stick zone is a disk only without coupling and
+      // without a tilt of the pressure; the load's moment and the radial
+      // tractions of the normal load shift it along the load and make it
+      // lopsided, so that its farthest point overstates it. Its radius is
+      // that of the disk of its area: the sticking points' tributary
+      // areas over the modelled fraction (the 3D counterpart of the line
+      // contact's width between its edges).
+      double stick_area = 0.;
+      for (const auto &p : points)
+        if (p.status == Contact::FrictionStatus::stick)
+          stick_area += p.weight;
+      stick_area    = Utilities::MPI::sum(stick_area, comm);
+      double radius = 0.;
       if (stick_hi >= stick_lo)
-        radius = hertz.point_contact() ? edge_hi : 0.5 * (edge_hi - edge_lo);
+        radius = hertz.point_contact() ?
+                   std::sqrt(stick_area / (numbers::PI * hertz.modelled_fraction)) :
+                   0.5 * (edge_hi - edge_lo);
       Quantity c;
       c.name          = "stick_radius";
       c.value         = radius;
