@@ -385,6 +385,13 @@ main()
                    "    subsection Mindlin reference\n      set Active = true\n    end\n"
                    "  end\n  subsection Foundation"),
            out);
+  run_case("friction_mindlin_zero_load_direction",
+           replace(with_contact("3", "set Shape = plane", "newton-penalty"),
+                   "  subsection Foundation",
+                   "  subsection Friction\n    set Coefficient = 0.3\n"
+                   "    subsection Mindlin reference\n      set Load direction = 0, 0\n"
+                   "    end\n  end\n  subsection Foundation"),
+           out);
   auto with_hertz = [&](const std::string &lines) {
     return replace(with_contact("3", "set Shape = plane", "newton-penalty"),
                    "  subsection Foundation",

@@ -1,6 +1,8 @@
 #include <signorini/contact/friction_parameters.h>
 #include <signorini/input_error.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -83,6 +85,21 @@ namespace Signorini
                         Patterns::Double(0.),
                         "Relative tolerance on stick_radius (0: not "
                         "checked).");
+      prm.declare_entry("Load direction",
+                        "",
+                        Patterns::Anything(),
+                        "The direction of the tangential load, 2 or 3 "
+                        "comma-separated components (missing ones are 0; a "
+                        "third is ignored in 2D), not all zero; its length "
+                        "does not matter. The load ratio is then the "
+                        "friction force's component along it over mu P, "
+                        "signed, and the traction is compared along it. "
+                        "Needed with a symmetry plane along the load (a "
+                        "half ball): the modelled part's friction force has "
+                        "a component normal to that plane, from the radial "
+                        "tractions of the normal load, which the whole "
+                        "body's cancels. Empty: the direction of the largest "
+                        "friction force of the load path so far.");
       prm.leave_subsection();
     }
 
@@ -100,6 +117,33 @@ namespace Signorini
       prm.enter_subsection("Mindlin reference");
       mindlin_reference      = prm.get_bool("Active");
       tolerance_stick_radius = prm.get_double("Tolerance stick radius");
+      {
+        const std::string key  = where + "Mindlin reference > Load direction";
+        const std::string text = prm.get("Load direction");
+        mindlin_load_direction.clear();
+        for (const std::string &item : Utilities::split_string_list(text, ','))
+          {
+            double value = 0.;
+            try
+              {
+                value = Utilities::string_to_double(item);
+              }
+            catch (...)
+              {
+                throw InputError(key, "'" + item + "' is not a number");
+              }
+            mindlin_load_direction.push_back(value);
+          }
+        double norm2 = 0.;
+        for (const double v : mindlin_load_direction)
+          norm2 += v * v;
+        if (!mindlin_load_direction.empty() &&
+            (mindlin_load_direction.size() < 2 || mindlin_load_direction.size() > 3 ||
+             !(norm2 > 0.) || !std::isfinite(norm2)))
+          throw InputError(key,
+                           "must be 2 or 3 finite components, not all zero, got '" + text +
+                             "'");
+      }
       prm.leave_subsection();
       check();
     }

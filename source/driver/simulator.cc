@@ -195,10 +195,7 @@ namespace Signorini
              contact_quantities(*problem->contact, parameters.contact.hertz, u,
                                 record,
                                 report.output_directory + "/contact_profile.csv",
-                                problem->friction.get(),
-                                report.steps.empty() ?
-                                  0. :
-                                  report.steps.back().total_dissipated_energy))
+                                problem->friction.get(), report.steps))
           report.quantities.push_back(q);
       solver->add_quantities(report.quantities);
     }

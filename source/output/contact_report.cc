@@ -15,7 +15,10 @@ namespace Signorini
      * contact state @p summary: the friction force, the dissipated energy,
      * the sticking and slipping points and, with a Mindlin reference,
      * the stick zone and the tangential traction against
-     * Cattaneo-Mindlin's under the measured load ratio Q/(mu P).
+     * Cattaneo-Mindlin's under the measured load ratio Q/(mu P), and
+     * Mindlin-Deresiewicz's when the load has turned back (the load ratios
+     * of the @p previous steps and this one, signed along the direction of
+     * the largest friction force among them: Mindlin::LoadPath).
      */
     template <int dim>
     std::vector<Quantity>
@@ -24,7 +27,7 @@ namespace Signorini
       const std::vector<typename Contact::FrictionTerm<dim>::PointSample> &points,
       const typename Contact::Model<dim>::StateSummary              &summary,
       const Contact::HertzReference                                 &hertz,
-      const double                                                   previous_dissipation,
+      const std::vector<Report::Step>                               &previous,
       Report::Step                                                  &record)
     {
       const MPI_Comm comm = friction.boundary().get_communicator();
@@ -45,7 +48,8 @@ namespace Signorini
       for (unsigned int d = 0; d < dim; ++d)
         record.friction_force[d] = totals.force[d];
       record.dissipated_energy       = totals.dissipation;
-      record.total_dissipated_energy = previous_dissipation + totals.dissipation;
+      record.total_dissipated_energy =
+        (previous.empty() ? 0. : previous.back().total_dissipated_energy) + totals.dissipation;
       record.stick_points            = totals.n_stick;
       record.slip_points             = totals.n_slip;
 
@@ -70,15 +74,58 @@ namespace Signorini
       const double mu    = parameters.coefficient;
       const double Q     = totals.force.norm();
       const double P     = std::abs(summary.total_force[dim - 1]);
-      const double ratio = P > 0. ? Q / (mu * P) : 0.;
+      const double ratio_of_norm = P > 0. ? Q / (mu * P) : 0.;
+      // The load path: each step's friction force along the load's line,
+      // 'Load direction' or that of the largest friction force so far (a
+      // load that turns back stays on its line).
+      Tensor<1, dim> line;
+      if (!parameters.mindlin_load_direction.empty())
+        {
+          for (unsigned int d = 0; d < dim && d < parameters.mindlin_load_direction.size(); ++d)
+            line[d] = parameters.mindlin_load_direction[d];
+          line /= line.norm();
+        }
+      else
+        {
+          double largest = Q;
+          if (Q > 0.)
+            line = totals.force / Q;
+          for (const auto &s : previous)
+            {
+              Tensor<1, dim> f;
+              for (unsigned int d = 0; d < dim; ++d)
+                f[d] = s.friction_force[d];
+              if (f.norm() > largest)
+                {
+                  largest = f.norm();
+                  line    = f / largest;
+                }
+            }
+        }
+      Contact::Mindlin::LoadPath path;
+      const auto signed_ratio = [&](const Tensor<1, 3> &force, const Tensor<1, 3> &normal) {
+        Tensor<1, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = force[d];
+        const double p = std::abs(normal[dim - 1]);
+        return p > 0. ? f * line / (mu * p) : 0.;
+      };
+      for (const auto &s : previous)
+        path.add(signed_ratio(s.friction_force, s.contact_force_vector));
+      path.add(signed_ratio(record.friction_force, record.contact_force_vector));
+      // Along a given direction the signed ratio's magnitude; otherwise
+      // that of the whole friction force, as before.
+      const double ratio =
+        parameters.mindlin_load_direction.empty() ?
+          ratio_of_norm :
+          std::abs(signed_ratio(record.friction_force, record.contact_force_vector));
       add("tangential_load_ratio", ratio);
       const double a     = hertz.half_width();
-      const double c_ref = a * Contact::Mindlin::stick_ratio(ratio, hertz.point_contact());
+      const double c_ref = a * path.stick_ratio(hertz.point_contact());
       // The stick zone's edges: midway between its outermost sticking
       // point and the nearest slipping point beyond it. A line contact
       // takes the half of the zone's width (its centre may shift with the
-      // tangential load), a point contact the radius from the contact's
-      // centre.
+      // tangential load); a point contact, the radius of its area (below).
       const auto position = [&hertz](const Point<dim> &X) {
         return hertz.point_contact() ? std::abs(hertz.distance(X)) : hertz.distance(X);
       };
@@ -107,9 +154,23 @@ namespace Signorini
       slip_hi = Utilities::MPI::min(slip_hi, comm);
       const double edge_hi = slip_hi < big ? 0.5 * (stick_hi + slip_hi) : stick_hi;
       const double edge_lo = slip_lo > -big ? 0.5 * (stick_lo + slip_lo) : stick_lo;
-      double       radius  = 0.;
+      // A point contact's stick zone is a disk only without coupling and
+      // without a tilt of the pressure; the load's moment and the radial
+      // tractions of the normal load shift it along the load and make it
+      // lopsided, so that its farthest point overstates it. Its radius is
+      // that of the disk of its area: the sticking points' tributary
+      // areas over the modelled fraction (the 3D counterpart of the line
+      // contact's width between its edges).
+      double stick_area = 0.;
+      for (const auto &p : points)
+        if (p.status == Contact::FrictionStatus::stick)
+          stick_area += p.weight;
+      stick_area    = Utilities::MPI::sum(stick_area, comm);
+      double radius = 0.;
       if (stick_hi >= stick_lo)
-        radius = hertz.point_contact() ? edge_hi : 0.5 * (edge_hi - edge_lo);
+        radius = hertz.point_contact() ?
+                   std::sqrt(stick_area / (numbers::PI * hertz.modelled_fraction)) :
+                   0.5 * (edge_hi - edge_lo);
       Quantity c;
       c.name          = "stick_radius";
       c.value         = radius;
@@ -120,21 +181,18 @@ namespace Signorini
       record.tangential_load_ratio  = ratio;
       record.stick_radius           = radius;
       record.stick_radius_reference = c_ref;
-      // The tangential traction along the friction force against
-      // Mindlin's q(r), relative L2 over the contact nodes (tributary
-      // weights).
-      Tensor<1, dim> direction;
-      if (Q > 0.)
-        direction = totals.force / Q;
+      // The tangential traction along the load's line against Mindlin's
+      // q(r) (Mindlin-Deresiewicz's after a reversal), relative L2 over
+      // the contact nodes (tributary weights).
       const double mu_p0  = mu * hertz.peak_pressure();
       double       error2 = 0., norm2 = 0.;
       for (const auto &p : points)
         {
           if (p.weight <= 0.)
             continue;
-          const double q_h = p.force * direction / p.weight;
-          const double q   = Contact::Mindlin::traction(std::abs(hertz.distance(p.X)), a,
-                                                      c_ref, mu_p0);
+          const double q_h = p.force * line / p.weight;
+          const double q   = path.traction(std::abs(hertz.distance(p.X)), a, mu_p0,
+                                         hertz.point_contact());
           error2 += p.weight * (q_h - q) * (q_h - q);
           norm2 += p.weight * q * q;
         }
@@ -154,7 +212,7 @@ namespace Signorini
                      Report::Step                  &record,
                      const std::string             &profile_file,
                      const Contact::FrictionTerm<dim> *friction,
-                     const double                      previous_dissipation)
+                     const std::vector<Report::Step>  &previous)
   {
     std::vector<Quantity> quantities;
     // The nodes' state once, for the summary, the Hertz samples and the
@@ -237,7 +295,7 @@ namespace Signorini
     for (unsigned int k = 0; k < points.size(); ++k)
       with_friction[k].extra = Contact::FrictionTerm<dim>::profile_values(points[k]);
     for (const auto &q : friction_quantities(*friction, points, summary, hertz,
-                                             previous_dissipation, record))
+                                             previous, record))
       quantities.push_back(q);
     contact.samples().write_profile(profile_file, u, contact.forces(), with_friction,
                                     reference, Contact::FrictionTerm<dim>::profile_header());
@@ -247,9 +305,11 @@ namespace Signorini
   template std::vector<Quantity>
   contact_quantities<2>(const Contact::Model<2> &, const Contact::HertzReference &,
                         const VectorType &, Report::Step &, const std::string &,
-                        const Contact::FrictionTerm<2> *, double);
+                        const Contact::FrictionTerm<2> *,
+                        const std::vector<Report::Step> &);
   template std::vector<Quantity>
   contact_quantities<3>(const Contact::Model<3> &, const Contact::HertzReference &,
                         const VectorType &, Report::Step &, const std::string &,
-                        const Contact::FrictionTerm<3> *, double);
+                        const Contact::FrictionTerm<3> *,
+                        const std::vector<Report::Step> &);
 } // namespace Signorini

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 // This header holds the parameter struct alone, so that the scene's
 // parameters (parameters/scene_parameters.h) can include it without the
 // friction law or a contact model.
@@ -40,6 +42,10 @@ namespace Signorini
       /// traction with Cattaneo-Mindlin's (contact/mindlin.h).
       bool   mindlin_reference      = false;
       double tolerance_stick_radius = 0.; // relative; 0: not checked
+      /// The tangential load's direction for the Mindlin reference (2 or
+      /// 3 entries, missing ones 0); empty: that of the largest friction
+      /// force of the load path.
+      std::vector<double> mindlin_load_direction;
 
       /// Whether the scene has friction.
       bool

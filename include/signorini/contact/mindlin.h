@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 namespace Signorini
 {
   namespace Contact
@@ -32,6 +34,57 @@ namespace Signorini
        */
       double
       traction(const double r, const double a, const double c, const double mu_p0);
+
+      /**
+       * A tangential load that moves back and forth along one line
+       * (Mindlin and Deresiewicz 1953; Johnson, Contact Mechanics, 7.2),
+       * given by its load ratios rho = Q/(mu P), signed along the line, one
+       * per load step. Loading from 0 (the virgin branch) keeps the stick
+       * zone c/a = stick_ratio(|rho|). A reversal at rho_r starts a branch
+       * on which a reverse slip zone spreads inwards from the edge: its
+       * stick zone is c'/a = stick_ratio(|rho - rho_r|/2), and its traction
+       * is the traction at the reversal minus twice the virgin traction
+       * of the load change |rho - rho_r|/2 (the superposition of the
+       * paper). Masing's memory closes loops: a branch that comes back to
+       * the reversal before its own start continues the branch before
+       * that, and one that comes back to -rho_r of the first reversal
+       * continues the virgin branch. For monotonic loading this is
+       * stick_ratio() and traction() with the load ratio |rho|.
+       */
+      class LoadPath
+      {
+      public:
+        /// The next step's load ratio Q/(mu P), signed along the line;
+        /// changes of at most 1e-9 are not movements (round-off of a
+        /// state without tangential load).
+        void
+        add(const double ratio);
+
+        /// c/a under the last load ratio added.
+        double
+        stick_ratio(const bool point_contact) const;
+
+        /// The tangential traction along the line at the distance r from
+        /// the contact's centre under the last load ratio added, for the
+        /// half-width (radius) a and mu p0.
+        double
+        traction(const double r,
+                 const double a,
+                 const double mu_p0,
+                 const bool   point_contact) const;
+
+        /// The reversal points still remembered, oldest first.
+        const std::vector<double> &
+        reversals() const
+        {
+          return reversal_points;
+        }
+
+      private:
+        std::vector<double> reversal_points;
+        double              last      = 0.;
+        int                 direction = 0; // of the current branch: +1, -1, 0 (none yet)
+      };
     } // namespace Mindlin
   } // namespace Contact
 } // namespace Signorini
