@@ -17,6 +17,9 @@
 //   gross slip; measured up to 1.2% on the coarse mesh, 0.3% on the
 //   scene's: the nodes' normals spread over the curved contact zone, so
 //   |sum F_N| < sum lambda);
+// - in 3D (prm/ironing_3d_friction.prm, on its mesh, 1 rank) the same
+//   checks, and the mean |Rx/Rz| while sliding within 4% of mu (measured
+//   0.305);
 // - Method = ipopt with friction between two bodies exits with status 2;
 // - with half the indentation, the mean |Rx/Ry| while sliding lies within
 //   4% of mu plus the frictionless run's mean (the ploughing ratio):
@@ -62,14 +65,14 @@ namespace
 
   /// Mean of |Rx/Ry| over 1.2 <= t <= 1.8 (0 if the run is incomplete).
   double
-  mean_ratio(const std::string &run)
+  mean_ratio(const std::string &run, const std::string &v = "y")
   {
     double       sum = 0.;
     unsigned int n   = 0;
     for (const auto &r : read_csv(run + "/reactions.csv"))
       if (r.at("time") >= 1.2 - 1e-9 && r.at("time") <= 1.8 + 1e-9)
         {
-          sum += std::abs(r.at("Rx_1") / r.at("Ry_1"));
+          sum += std::abs(r.at("Rx_1") / r.at("R" + v + "_1"));
           ++n;
         }
     return n > 0 ? sum / n : 0.;
@@ -77,7 +80,8 @@ namespace
 
   /// The checks of a frictional run; returns its mean ratio.
   double
-  check_run(std::ostream &out, const std::string &run, const int status)
+  check_run(std::ostream &out, const std::string &run, const int status,
+            const std::string &v = "y")
   {
     out << run << ": exit code 0: " << verdict(status == 0) << "\n";
     const auto reactions = read_csv(run + "/reactions.csv");
@@ -94,7 +98,7 @@ namespace
       {
         const auto  &s  = steps[i];
         const auto  &r  = reactions[i];
-        const double ry = std::abs(r.at("Ry_1"));
+        const double ry = std::abs(r.at("R" + v + "_1"));
         cuts += static_cast<unsigned int>(s.at("cuts_before"));
         settled = settled && s.at("friction_change") <= 1e-6 &&
                   s.at("friction_iterations") <= 20;
@@ -102,19 +106,21 @@ namespace
           worst_balance = std::max(
             {worst_balance,
              std::abs(r.at("Rx_1") + s.at("contact_force_x") + s.at("friction_force_x")) / ry,
-             std::abs(r.at("Ry_1") + s.at("contact_force_y") + s.at("friction_force_y")) /
+             std::abs(r.at("R" + v + "_1") + s.at("contact_force_" + v) +
+                      s.at("friction_force_" + v)) /
                ry});
         if (s.at("time") >= 1.2 - 1e-9 && s.at("time") <= 1.8 + 1e-9)
           {
             ++sliding;
             all_slip = all_slip && s.at("stick_points") == 0 && s.at("slip_points") > 0;
-            const double friction = std::hypot(s.at("friction_force_x"), s.at("friction_force_y"));
-            const double normal   = std::hypot(s.at("contact_force_x"), s.at("contact_force_y"));
+            const double friction =
+              std::hypot(s.at("friction_force_x"), s.at("friction_force_" + v));
+            const double normal = std::hypot(s.at("contact_force_x"), s.at("contact_force_" + v));
             worst_coulomb = std::max(worst_coulomb, std::abs(friction / (mu * normal) - 1.));
           }
       }
     std::cerr << run << ": balance " << worst_balance << ", |F_T|/(mu|F_N|) - 1 up to "
-              << worst_coulomb << ", mean |Rx/Ry| " << mean_ratio(run) << "\n";
+              << worst_coulomb << ", mean |Rx/R" << v << "| " << mean_ratio(run, v) << "\n";
     std::cerr << run << ": " << steps.size() << " load steps, " << cuts << " step cuts\n";
     out << run << ": at most 2 step cuts: " << verdict(cuts <= 2) << "\n"
         << run << ": outer loop below 1e-6 within 20 iterations in every step: "
@@ -125,7 +131,7 @@ namespace
         << verdict(sliding > 0 && all_slip) << "\n"
         << run << ": friction force = mu x contact force within 2% while sliding: "
         << verdict(sliding > 0 && worst_coulomb <= 2e-2) << "\n";
-    return mean_ratio(run);
+    return mean_ratio(run, v);
   }
 } // namespace
 
@@ -157,4 +163,9 @@ main()
             << " against " << mu + ploughing << " (" << shallow / (mu + ploughing) - 1. << ")\n";
   out << "shallow: mean |Rx/Ry| within 4% of mu + the frictionless ploughing ratio: "
       << verdict(std::abs(shallow / (mu + ploughing) - 1.) <= 0.04) << "\n";
+  // 3D: prm/ironing_3d_friction.prm on its own mesh.
+  const double ironing_3d = check_run(
+    out, "3d", RunOutput::run_scene("3d", "ironing_3d_friction.prm", ""), "z");
+  out << "3d: mean |Rx/Rz| while sliding within 4% of mu: "
+      << verdict(std::abs(ironing_3d / mu - 1.) <= 0.04) << "\n";
 }
