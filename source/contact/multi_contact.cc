@@ -509,7 +509,41 @@ namespace Signorini
     MultiContact<dim>::node_samples(const VectorType          &u,
                                     const std::vector<double> &forces) const
     {
+      return samples_and_pairs(u, forces, nullptr);
+    }
+
+    template <int dim>
+    void
+    MultiContact<dim>::add_output_fields(DataOut<dim>              &data_out,
+                                         const VectorType          &u,
+                                         const std::vector<double> &forces) const
+    {
+      ContactSamples<dim>::add_output_fields(data_out, u, forces);
+      std::vector<double> pair;
+      samples_and_pairs(u, forces, &pair);
+      boundary.add_fields(data_out, {"contact_pair"}, {pair});
+    }
+
+    template <int dim>
+    std::vector<typename MultiContact<dim>::NodeSample>
+    MultiContact<dim>::samples_and_pairs(const VectorType          &u,
+                                         const std::vector<double> &forces,
+                                         std::vector<double>       *pair) const
+    {
       std::vector<NodeSample> samples(boundary.nodes().size());
+      std::vector<double>     largest(samples.size(), 0.);
+      if (pair)
+        pair->assign(samples.size(), 0.);
+      // Part @p k puts the force @p f on node @p i.
+      const auto count = [&](const unsigned int i, const unsigned int k,
+                             const Tensor<1, dim> &f) {
+        samples[i].force += f;
+        if (pair && f.norm() > largest[i])
+          {
+            largest[i]  = f.norm();
+            (*pair)[i] = k + 1;
+          }
+      };
       for (unsigned int i = 0; i < samples.size(); ++i)
         {
           const auto &n = boundary.nodes()[i];
@@ -520,15 +554,17 @@ namespace Signorini
           samples[i].gaps   = {0.};
           samples[i].weight = n.weight;
         }
-      for (const Part &p : parts)
+      for (unsigned int part = 0; part < parts.size(); ++part)
         {
-          const auto part_forces = slice(forces, p);
-          const auto contact     = p.model->samples().node_samples(u, part_forces);
-          const auto &nodes      = p.model->contact_nodes_on_boundary().nodes();
+          const Part &p           = parts[part];
+          const auto  part_forces = slice(forces, p);
+          const auto  contact     = p.model->samples().node_samples(u, part_forces);
+          const auto &nodes       = p.model->contact_nodes_on_boundary().nodes();
           for (unsigned int k = 0; k < contact.size(); ++k)
             {
-              NodeSample &s = samples[node_index(nodes[k].dofs[0])];
-              s.force += contact[k].force;
+              const unsigned int i = node_index(nodes[k].dofs[0]);
+              NodeSample        &s = samples[i];
+              count(i, part, contact[k].force);
               // The foundation's first gap is signed (< 0 inside), the
               // pair's a penetration depth (>= 0).
               const double depth =
@@ -540,9 +576,10 @@ namespace Signorini
               const auto &target = p.two_body->target_nodes().nodes();
               for (unsigned int j = 0; j < target.size(); ++j)
                 {
-                  NodeSample &s = samples[node_index(target[j].dofs[0])];
+                  Tensor<1, dim> f;
                   for (unsigned int d = 0; d < dim; ++d)
-                    s.force[d] += part_forces[p.n_contact_entries + j * dim + d];
+                    f[d] = part_forces[p.n_contact_entries + j * dim + d];
+                  count(node_index(target[j].dofs[0]), part, f);
                 }
             }
         }

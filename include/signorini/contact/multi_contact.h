@@ -192,6 +192,13 @@ namespace Signorini
         return "penetration";
       }
 
+      /// ContactSamples' fields and contact_pair: the number of the pair
+      /// that puts the largest force on the node (0: none).
+      void
+      add_output_fields(DataOut<dim>              &data_out,
+                        const VectorType          &u,
+                        const std::vector<double> &forces) const override;
+
     private:
       /// One contact: a two-body pair or a foundation boundary.
       struct Part
@@ -215,6 +222,13 @@ namespace Signorini
         return std::vector<double>(forces.begin() + p.offset,
                                    forces.begin() + p.offset + p.size);
       }
+
+      /// node_samples(), and if @p pair is given the number (from 1) of the
+      /// pair with the largest force on each node (0: none).
+      std::vector<NodeSample>
+      samples_and_pairs(const VectorType          &u,
+                        const std::vector<double> &forces,
+                        std::vector<double>       *pair) const;
 
       /// The index in boundary.nodes() of the node with first DoF @p dof.
       unsigned int
