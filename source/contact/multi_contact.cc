@@ -685,18 +685,19 @@ namespace Signorini
             q->estimable = true;
             q->scale     = on_target.norm();
           }
-      Quantity *area  = add(key + "_contact_area", state.area);
-      area->estimable = true;
+      // An index, not a pointer: the quantities that follow may move it.
+      const std::size_t area = quantities.size();
+      add(key + "_contact_area", state.area)->estimable = true;
       add(key + "_active_contact_nodes", state.n_active);
       add(key + "_max_penetration_over_h", state.max_penetration_ratio);
       std::function<double(const Point<dim> &)> reference;
       if (hertz.active())
         {
-          const double a      = hertz.half_width();
-          area->has_reference = true;
-          area->reference =
+          const double a                 = hertz.half_width();
+          quantities[area].has_reference = true;
+          quantities[area].reference =
             hertz.modelled_fraction * (hertz.point_contact() ? numbers::PI * a * a : 2. * a);
-          area->tolerance = hertz.tolerance_area;
+          quantities[area].tolerance = hertz.tolerance_area;
           std::vector<std::pair<double, double>> pressure;
           for (const auto &s : p.model->samples().gather_pressure(samples))
             pressure.emplace_back(hertz.distance(s.first), s.second);
