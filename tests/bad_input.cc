@@ -16,7 +16,11 @@
 // a body that nothing holds where the load pushes it (the run ends at once
 // with exit 3 and the reason, instead of crawling); and issue 51's
 // placement of a body: a rotation about a zero axis, a translation beyond
-// 1e30 or too far for the body's size.
+// 1e30 or too far for the body's size; and its contact pairs: a pair that
+// is no 'contact:target', a boundary no body has, both boundaries on one
+// body, a Hertz reference of a pair the scene does not have, a scene-wide
+// Hertz reference, the interior point method; a refinement ball's centre
+// of one coordinate.
 
 #include "run_output.h"
 
@@ -494,6 +498,40 @@ main()
                               "  subsection Interior point\n    set Tolerance = 0\n"
                               "  end\nend"}}),
            out);
+  // Several contact pairs (Contact > Type = pairs, issue 51), on the disk
+  // stack: a pair that is no 'contact:target', a boundary no body has, a
+  // pair within one body, a Hertz reference of a pair the scene does not
+  // have, the scene-wide Hertz reference, the interior point method;
+  // several refinement balls with a point of one coordinate.
+  const auto stack = [](const std::string &edits) {
+    return "include " + std::string(SIGNORINI_SOURCE_DIR) + "/prm/disk_stack.prm\n" +
+           "subsection Output\n  set Format = none\nend\n" + edits;
+  };
+  const auto pairs = [&stack](const std::string &entries) {
+    return stack("subsection Contact\n  subsection Pairs\n" + entries + "  end\nend\n");
+  };
+  run_case("pairs_not_a_pair", pairs("    set Two-body pairs = 0-10\n"), out);
+  std::string no_hertz; // the scene's Hertz references off
+  for (const char *k : {"1", "2", "3"})
+    no_hertz += std::string("    subsection Pair ") + k +
+                "\n      subsection Hertz reference\n        set Line load = 0\n"
+                "      end\n    end\n";
+  run_case("pairs_unknown_boundary",
+           pairs("    set Two-body pairs = 0:10, 10:99\n" + no_hertz), out);
+  run_case("pairs_within_one_body", pairs("    set Two-body pairs = 0:2\n" + no_hertz),
+           out);
+  run_case("pairs_hertz_of_no_pair",
+           pairs("    subsection Pair 5\n      subsection Hertz reference\n"
+                 "        set Line load = 1\n      end\n    end\n"),
+           out);
+  run_case("pairs_scene_hertz",
+           stack("subsection Contact\n  subsection Hertz reference\n"
+                 "    set Line load = 1\n  end\nend\n"),
+           out);
+  run_case("pairs_interior_point",
+           stack("subsection Solver\n  set Method = interior-point\nend\n"), out);
+  run_case("local_refinement_centers",
+           stack("subsection Mesh\n  set Local refinement center = 0, 0; 1\nend\n"), out);
   for (const std::string updates : {"some", "21"})
     run_case("interior_point_polish_updates_" + updates,
              scene({{"@EXTRA@", "subsection Solver\n  set Method = interior-point\n"

@@ -15,10 +15,13 @@
 // plane on it), the lowest point of a ball a vertex, a two-body 3D scene,
 // and a small hexahedral Gmsh file. And the octant ball's flat top area
 // with a degree 2 mapping after a local refinement of its rim cells.
+// BodyGeometry::boundary_ids() (which body carries a boundary, for a
+// pair's Hertz modulus) against the ids of every shape's built mesh.
 
 #include <signorini/scene/mesh.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
@@ -35,6 +38,28 @@ using namespace Signorini;
 
 namespace
 {
+  /// Whether BodyGeometry::boundary_ids() of the shape @p name (default
+  /// entries, id offset 7) lists the ids its built mesh has.
+  template <int dim>
+  bool
+  listed_ids_are_built(const std::string &name)
+  {
+    ParameterHandler prm;
+    BodyGeometry::declare_parameters(prm);
+    prm.set("Shape", name);
+    prm.set("Boundary id offset", "7");
+    BodyGeometry g;
+    g.parse_parameters(prm, dim, "Body 1 > Geometry");
+    MeshParameters                            mesh;
+    parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
+    build_scene_mesh<dim>(mesh, {g}, {0}, tria, true);
+    std::vector<unsigned int> built;
+    for (const auto id : tria.get_boundary_ids())
+      built.push_back(id);
+    std::sort(built.begin(), built.end());
+    return built == g.boundary_ids(dim);
+  }
+
   BodyGeometry
   disk(const BodyGeometry::Shape shape, const unsigned int offset = 0)
   {
@@ -523,6 +548,18 @@ main(int argc, char **argv)
     measure(tria, {{0, 2.}, {1, 2.}, {2, 2.}, {3, 2.}, {4, 4.}, {5, 4.},
                    {10, pi / 2}, {11, pi / 4}, {12, pi / 4}, {13, pi / 4}},
             4. + pi / 6, "box + octant ball", out);
+  }
+  {
+    std::string wrong;
+    for (const std::string shape : {"rectangle", "quarter disk", "half disk", "die"})
+      if (!listed_ids_are_built<2>(shape))
+        wrong += " " + shape + " (2D)";
+    for (const std::string shape : {"rectangle", "die", "octant ball", "quarter ball",
+                                    "hemisphere", "quarter cylinder", "half cylinder"})
+      if (!listed_ids_are_built<3>(shape))
+        wrong += " " + shape + " (3D)";
+    out << "boundary_ids() lists the built ids of every shape: "
+        << (wrong.empty() ? "yes" : "NO:" + wrong) << "\n";
   }
   {
     // A small hexahedral Gmsh file: the unit cube in 2 x 2 x 2 cells,

@@ -4,7 +4,8 @@
 // iterations, and the same load_steps.csv rows, as the run that was never
 // stopped:
 // - penalty continuation, two bodies (Hertz on a block), 1 rank and 2 ranks,
-//   and in two passes (Passes = two-pass);
+//   and in two passes (Passes = two-pass), and several pairs (the disk
+//   stack, Type = pairs);
 // - Ipopt with the rigid foundation's constraints (warm-started multipliers);
 // - the interior point method (the same, on 1 and 2 ranks), also with
 //   incompressible bodies (the augmented Lagrangian's multipliers);
@@ -117,6 +118,9 @@ main()
               four_steps + "subsection Contact\n  subsection Two bodies\n"
                            "    set Passes = two-pass\n  end\nend\n",
               {1});
+  // Several contact pairs (Type = pairs, the disk stack): every part's
+  // record and broad-phase counts, one field each.
+  check_scene(out, "pairs", "disk_stack.prm", "", {0});
   // Ipopt with constraints, its multipliers warm-started across steps.
   check_scene(out, "ipopt", "default.prm",
               four_steps +

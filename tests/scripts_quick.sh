@@ -67,6 +67,10 @@ run direct_solvers 0 python3 "$b/direct_solvers.py" --quick --binary "$binary" \
 expect_text direct.md "<!-- DIRECT-SOLVERS BEGIN -->"
 expect_text direct.md "| yes |"
 
+run disk_chain 0 python3 "$b/disk_chain.py" --quick --binary "$binary" --out chain
+expect chain/chain_2/summary.json chain/chain_3/summary.json
+expect_text disk_chain.log "| 3 | 3 |"
+
 run effects 0 python3 "$b/effects.py" --quick --binary "$binary" --out effects \
   --markdown effects.md
 expect_text effects.md "<!-- EFFECTS BEGIN -->"

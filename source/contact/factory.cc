@@ -18,7 +18,9 @@ namespace Signorini
       if (!entry)
         return nullptr;
       // The boundaries the model acts on must exist (collective).
-      std::vector<NamedBoundaryId> ids = {{"Contact boundary id", parameters.boundary_id}};
+      std::vector<NamedBoundaryId> ids;
+      if (entry->capabilities.contact_boundary_id)
+        ids.push_back({"Contact boundary id", parameters.boundary_id});
       if (entry->boundary_ids)
         for (const auto &id : entry->boundary_ids(*parameters.model_parameters))
           ids.push_back(id);

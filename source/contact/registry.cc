@@ -13,7 +13,8 @@ namespace Signorini
     // it (ModelEntry NAME() in namespace Contact).
 #define SIGNORINI_CONTACT_MODELS(X) \
   X(rigid_foundation_model)         \
-  X(two_body_model)
+  X(two_body_model)                 \
+  X(pairs_model)
 
 #define SIGNORINI_DECLARE_MODEL(function) ModelEntry function();
     SIGNORINI_CONTACT_MODELS(SIGNORINI_DECLARE_MODEL)

@@ -131,7 +131,8 @@ namespace Signorini
       }
     load_steps = std::make_unique<LoadStepTable>(
       report.output_directory, Utilities::MPI::this_mpi_process(comm) == 0,
-      parameters.contact.friction.active());
+      parameters.contact.friction.active(),
+      contact ? contact->part_columns() : std::vector<std::string>());
     if (contact)
       {
         if (restart_folder.empty())

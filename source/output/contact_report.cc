@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -281,6 +282,18 @@ namespace Signorini
         reference = [&hertz](const Point<dim> &x) {
           return hertz.pressure(hertz.distance(x));
         };
+      }
+    // A model of several pairs: each pair's (and body's) quantities, and
+    // the values of its load_steps.csv columns.
+    const auto parts   = contact.part_quantities(u, profile_file);
+    const auto columns = contact.part_columns();
+    record.part_values.assign(columns.size(), 0.);
+    for (const auto &q : parts)
+      {
+        const auto column = std::find(columns.begin(), columns.end(), q.name);
+        if (column != columns.end())
+          record.part_values[column - columns.begin()] = q.value;
+        quantities.push_back(q);
       }
     if (!friction)
       {

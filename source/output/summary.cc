@@ -377,12 +377,14 @@ namespace Signorini
         std::cerr << "signorini: warning: " << reason << std::endl;
   }
 
-  LoadStepTable::LoadStepTable(const std::string &output_directory,
-                               const bool         writer,
-                               const bool         friction)
+  LoadStepTable::LoadStepTable(const std::string              &output_directory,
+                               const bool                      writer,
+                               const bool                      friction,
+                               const std::vector<std::string> &part_columns)
     : file(output_directory + "/load_steps.csv")
     , writer(writer)
     , friction(friction)
+    , part_columns(part_columns)
   {}
 
   void
@@ -410,6 +412,8 @@ namespace Signorini
         csv << ",dissipated_energy,total_dissipated_energy,stick_points,slip_points,"
                "tangential_load_ratio,stick_radius,stick_radius_reference";
       }
+    for (const auto &column : part_columns)
+      csv << "," << column;
     csv << "\n";
     if (std::string reason; !out.commit(&reason))
       std::cerr << "signorini: warning: " << reason << std::endl;
@@ -447,6 +451,8 @@ namespace Signorini
             << s.stick_points << "," << s.slip_points << "," << s.tangential_load_ratio << ","
             << s.stick_radius << "," << s.stick_radius_reference;
       }
+    for (std::size_t i = 0; i < part_columns.size(); ++i)
+      row << "," << (i < s.part_values.size() ? s.part_values[i] : 0.);
     row << "\n";
     std::ofstream csv(file, std::ios::app);
     csv << row.str() << std::flush;

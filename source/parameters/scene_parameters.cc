@@ -1,4 +1,5 @@
 #include <signorini/input_error.h>
+#include <signorini/contact/pairs_parameters.h>
 #include <signorini/contact/registry.h>
 #include <signorini/material/interface.h>
 #include <signorini/parameters/lists.h>
@@ -447,23 +448,93 @@ namespace Signorini
           double compliance = 0.;
           const unsigned int n = contact.model->capabilities.bodies;
           for (unsigned int b = 0; b < n; ++b)
-            {
-              // An incompressible body (J = 1 constraints, no bulk
-              // term): nu = 1/2 and E = 3 G, so (1 - nu^2)/E = 1/(4 G).
-              if (bodies[b].incompressible)
-                compliance += 1. / (4. * bodies[b].material->small_strain_lame().first);
-              else
-                {
-                  const auto [E, nu] =
-                    Material::small_strain_young_poisson(*bodies[b].material);
-                  compliance += (1. - nu * nu) / E;
-                }
-            }
+            compliance += hertz_compliance(bodies[b]);
           hertz.contact_modulus = 1. / compliance;
         }
+      if (const auto *pairs =
+            dynamic_cast<const Signorini::Contact::ParsedParameters<
+              Signorini::Contact::PairsParameters> *>(contact.model_parameters.get()))
+        parse_pairs(pairs->value);
 
       postprocess.parse_parameters(prm, dim);
       checkpoint.parse_parameters(prm);
+    }
+
+    double
+    Scene::hertz_compliance(const Body &body)
+    {
+      // An incompressible body (J = 1 constraints, no bulk term): nu = 1/2
+      // and E = 3 G, so (1 - nu^2)/E = 1/(4 G).
+      if (body.incompressible)
+        return 1. / (4. * body.material->small_strain_lame().first);
+      const auto [E, nu] = Material::small_strain_young_poisson(*body.material);
+      return (1. - nu * nu) / E;
+    }
+
+    void
+    Scene::parse_pairs(const Signorini::Contact::PairsParameters &parsed)
+    {
+      const unsigned int dim   = global.dimension;
+      auto               pairs = parsed;
+      if (contact.hertz.active())
+        throw InputError("Contact > Hertz reference > " +
+                           std::string(contact.hertz.point_contact() ? "Point load" :
+                                                                       "Line load"),
+                         "with Type = pairs each pair has its own reference: "
+                         "Contact > Pairs > Pair K > Hertz reference");
+      pairs.body_material_ids = material_ids();
+      // The body that carries boundary @p id (a generated mesh: the
+      // shapes' ids), or none.
+      const auto body_of = [&](const types::boundary_id id) -> const Body * {
+        if (mesh.source != MeshParameters::Source::generated)
+          return nullptr;
+        for (const auto &body : bodies)
+          for (const auto shape_id : body.geometry.boundary_ids(dim))
+            if (shape_id == id)
+              return &body;
+        return nullptr;
+      };
+      for (unsigned int k = 0; k < pairs.n_pairs(); ++k)
+        {
+          auto &h = pairs.hertz[k];
+          if (!h.active())
+            continue;
+          const std::string section =
+            "Contact > Pairs > Pair " + std::to_string(k + 1) + " > Hertz reference > ";
+          if (h.point_contact() && dim != 3)
+            throw InputError(section + "Point load",
+                             "point contact (a sphere) needs Dimension = 3; in 2D "
+                             "use 'Line load'");
+          if (h.line_load > 0. && dim != 2)
+            throw InputError(section + "Line load",
+                             "line contact is per unit thickness (Dimension = 2); "
+                             "in 3D use 'Point load' (a sphere)");
+          if (h.contact_modulus > 0.)
+            continue;
+          // 1/E* from the pair's bodies (one against the foundation).
+          std::vector<types::boundary_id> ids;
+          if (pairs.is_foundation(k))
+            ids = {pairs.foundation_ids[k - pairs.pairs.size()]};
+          else
+            ids = {pairs.pairs[k].contact, pairs.pairs[k].target};
+          double compliance = 0.;
+          for (const auto id : ids)
+            {
+              const Body *body = body_of(id);
+              if (!body)
+                throw InputError(section + "Contact modulus",
+                                 "no body of the scene's built-in shapes carries "
+                                 "boundary id " +
+                                   std::to_string(id) +
+                                   " (a Gmsh mesh does not say before it is "
+                                   "read): give E* here");
+              compliance += hertz_compliance(*body);
+            }
+          h.contact_modulus = 1. / compliance;
+        }
+      contact.model_parameters = std::make_shared<
+        const Signorini::Contact::ParsedParameters<Signorini::Contact::PairsParameters>>(
+        std::move(pairs));
     }
 
     std::vector<types::material_id>

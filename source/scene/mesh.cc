@@ -380,6 +380,41 @@ namespace Signorini
     return moved;
   }
 
+  std::vector<unsigned int>
+  BodyGeometry::boundary_ids(const unsigned int dim) const
+  {
+    // The ids 'Shape' documents (and build_body() sets): 0 .. n - 1.
+    unsigned int n = 0;
+    switch (shape)
+      {
+        case Shape::rectangle:
+          n = 2 * dim;
+          break;
+        case Shape::quarter_disk:
+        case Shape::quarter_ball:
+          n = 3;
+          break;
+        case Shape::half_disk:
+        case Shape::hemisphere:
+          n = 2;
+          break;
+        case Shape::die:
+          n = (dim == 3 ? 4 : 2);
+          break;
+        case Shape::octant_ball:
+        case Shape::half_cylinder:
+          n = 4;
+          break;
+        case Shape::quarter_cylinder:
+          n = 5;
+          break;
+      }
+    std::vector<unsigned int> ids;
+    for (unsigned int i = 0; i < n; ++i)
+      ids.push_back(i + boundary_id_offset);
+    return ids;
+  }
+
   void
   BodyGeometry::parse_parameters(ParameterHandler  &prm,
                                  const unsigned int dim,
@@ -589,9 +624,11 @@ namespace Signorini
                       "zone). The transition is graded with hanging nodes.");
     prm.declare_entry("Local refinement center",
                       "0, 0",
-                      Patterns::List(Patterns::Double(), 2, 3),
+                      Patterns::Anything(),
                       "Center of the locally refined ball [length], dim "
-                      "coordinates.");
+                      "coordinates; several balls (the contact zones of a "
+                      "scene with several contact pairs) as points "
+                      "separated by ';', e.g. '0, 0; 0, 2; 0, 4'.");
     prm.declare_entry("Local refinement radius",
                       "0",
                       Patterns::Double(0.),
@@ -615,9 +652,27 @@ namespace Signorini
     global_refinements = prm.get_integer("Global refinements");
     local_refinements  = prm.get_integer("Local refinements");
     local_center.clear();
-    for (const auto &v :
-         Utilities::split_string_list(prm.get("Local refinement center")))
-      local_center.push_back(Utilities::string_to_double(v));
+    local_center_count = 0;
+    for (const auto &point :
+         Utilities::split_string_list(prm.get("Local refinement center"), ';'))
+      {
+        const auto coordinates = Utilities::split_string_list(point);
+        if (coordinates.size() < 2 || coordinates.size() > 3)
+          throw InputError("Mesh > Local refinement center",
+                           "each point needs 2 or 3 coordinates, got '" + point + "'");
+        for (const auto &v : coordinates)
+          {
+            char        *end   = nullptr;
+            const double value = std::strtod(v.c_str(), &end);
+            if (v.empty() || *end != '\0' || !std::isfinite(value))
+              throw InputError("Mesh > Local refinement center",
+                               "'" + v + "' is not a finite number");
+            local_center.push_back(value);
+          }
+        ++local_center_count;
+      }
+    if (local_center_count == 0)
+      throw InputError("Mesh > Local refinement center", "needs at least one point");
     local_radius = prm.get_double("Local refinement radius");
     if (local_refinements > 0 && !(local_radius > 0.))
       throw InputError("Mesh > Local refinement radius",
@@ -1270,18 +1325,26 @@ namespace Signorini
 
     if (mesh.local_refinements > 0)
       {
-        if (mesh.local_center.size() != dim)
+        if (mesh.local_center.size() != dim * mesh.local_center_count)
           throw InputError("Mesh > Local refinement center",
-                           "needs " + std::to_string(dim) + " coordinates");
-        Point<dim> center;
-        for (unsigned int d = 0; d < dim; ++d)
-          center[d] = mesh.local_center[d];
+                           "needs " + std::to_string(dim) + " coordinates" +
+                             (mesh.local_center_count > 1 ? " per point" : ""));
+        std::vector<Point<dim>> centers(mesh.local_center_count);
+        for (unsigned int p = 0; p < centers.size(); ++p)
+          for (unsigned int d = 0; d < dim; ++d)
+            centers[p][d] = mesh.local_center[p * dim + d];
+        const auto inside = [&](const Point<dim> &x) {
+          for (const auto &center : centers)
+            if (x.distance(center) <= mesh.local_radius)
+              return true;
+          return false;
+        };
         for (unsigned int r = 0; r < mesh.local_refinements; ++r)
           {
             for (const auto &cell : tria.active_cell_iterators())
               if (cell->is_locally_owned())
                 for (const auto v : cell->vertex_indices())
-                  if (cell->vertex(v).distance(center) <= mesh.local_radius)
+                  if (inside(cell->vertex(v)))
                     {
                       cell->set_refine_flag();
                       break;

@@ -6,6 +6,7 @@
 #include <signorini/contact/penalty.h>
 #include <signorini/contact/samples.h>
 #include <signorini/output/json.h>
+#include <signorini/output/quantity.h>
 #include <signorini/types.h>
 
 #include <deal.II/base/index_set.h>
@@ -199,6 +200,28 @@ namespace Signorini
       /// The model's part of summary.json's "contact" block.
       virtual void
       write_summary(Json &block) const = 0;
+
+      /**
+       * For a model made of several contacts (pairs): each contact's own
+       * quantities at the ghosted state @p u with the nodal forces
+       * forces(), named with the contact (resultants, area, Hertz), and
+       * its profile beside @p profile_file (collective). None by default.
+       */
+      virtual std::vector<Quantity>
+      part_quantities(const VectorType &u, const std::string &profile_file) const
+      {
+        (void)u;
+        (void)profile_file;
+        return {};
+      }
+
+      /// The names of the quantities of part_quantities() that
+      /// load_steps.csv gets as columns (known before any step).
+      virtual std::vector<std::string>
+      part_columns() const
+      {
+        return {};
+      }
 
     protected:
       /// The block's entries every model has: type, boundary id, what the

@@ -42,6 +42,9 @@ namespace Signorini
       /// obstacle; 2: Body 1 against Body 2, which must be active). Hertz's
       /// contact modulus sums the compliances of this many bodies.
       unsigned int bodies = 1;
+      /// Whether the model acts on 'Contact boundary id' (checked against
+      /// the mesh); a model of several pairs names its boundaries itself.
+      bool contact_boundary_id = true;
     };
 
     /// A model's parsed subsection(s); each model derives its own (or uses

@@ -84,8 +84,9 @@ namespace Signorini
 
       /// The nodal fields contact_pressure, contact_GAP (the first of
       /// profile_gaps()) and contact_active for the nodal @p forces; the
-      /// vectors live with the contact nodes until the next call.
-      void
+      /// vectors live with the contact nodes until the next call. A model
+      /// may add more fields (a model of several pairs: the pair id).
+      virtual void
       add_output_fields(DataOut<dim>              &data_out,
                         const VectorType          &u,
                         const std::vector<double> &forces) const;

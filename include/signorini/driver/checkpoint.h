@@ -16,7 +16,7 @@ namespace Signorini
   namespace Checkpoint
   {
     /// Version of the checkpoint format (state files and their order).
-    constexpr unsigned int format_version = 8; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back; 6: AMG builds in the step record; 7: the state on nodes and cells as fields attached to the mesh (any number of ranks); 8: friction in the step record
+    constexpr unsigned int format_version = 9; // 2: contact area and moment in the step record; 3: estimated errors of the quantities; 4: linear solves in the step record; 5: refined_back; 6: AMG builds in the step record; 7: the state on nodes and cells as fields attached to the mesh (any number of ranks); 8: friction in the step record; 9: the per-pair values in the step record
 
     /// What every state file starts with; read before anything is built.
     struct Header

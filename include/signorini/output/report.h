@@ -63,6 +63,9 @@ namespace Signorini
       double stick_radius           = 0.;
       double stick_radius_reference = 0.;
       double tangential_load_ratio  = 0.;
+      // A model of several contact pairs: the values of its
+      // part_columns() (per pair and per body resultants, areas).
+      std::vector<double> part_values;
 
       template <class Archive>
       void
@@ -76,6 +79,7 @@ namespace Signorini
         ar &friction_iterations &friction_change &friction_force;
         ar &dissipated_energy &total_dissipated_energy &stick_points &slip_points;
         ar &stick_radius &stick_radius_reference &tangential_load_ratio;
+        ar &part_values;
       }
     };
 

@@ -33,9 +33,12 @@ namespace Signorini
   public:
     /// The file in @p output_directory; only @p writer (rank 0) writes.
     /// With @p friction, the rows end with the friction columns.
-    LoadStepTable(const std::string &output_directory,
-                  const bool         writer,
-                  const bool         friction = false);
+    /// With @p part_columns (Contact::Model::part_columns()), the rows
+    /// end with those quantities (Report::Step::part_values).
+    LoadStepTable(const std::string              &output_directory,
+                  const bool                      writer,
+                  const bool                      friction     = false,
+                  const std::vector<std::string> &part_columns = {});
 
     /// Start the file anew with its header (a new run).
     void
@@ -54,9 +57,10 @@ namespace Signorini
     }
 
   private:
-    std::string file;
-    bool        writer;
-    bool        friction;
+    std::string              file;
+    bool                     writer;
+    bool                     friction;
+    std::vector<std::string> part_columns;
   };
 
   /**

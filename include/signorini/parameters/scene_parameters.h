@@ -35,6 +35,7 @@ namespace Signorini
   {
     struct ModelEntry;
     struct ModelParameters;
+    struct PairsParameters;
   } // namespace Contact
 
   /**
@@ -78,7 +79,10 @@ namespace Signorini
     /// "Body 1", "Body 2": an active body's cells, shape and material.
     struct Body
     {
-      static constexpr unsigned int max_bodies = 2;
+      /// 'Body 1' to 'Body 24' are declared (issue 51: any number of
+      /// bodies; each declared body adds its Geometry and Material entries
+      /// to every parameter listing).
+      static constexpr unsigned int max_bodies = 24;
 
       types::material_id                   material_id = 0;
       BodyGeometry                         geometry;
@@ -211,6 +215,17 @@ namespace Signorini
       /// The material ids of the bodies with J = 1 constraints.
       std::set<types::material_id>
       incompressible_ids() const;
+
+    private:
+      /// (1 - nu^2)/E of @p body, its share of Hertz's 1/E*.
+      static double
+      hertz_compliance(const Body &body);
+
+      /// Type = pairs: the bodies' material ids and each pair's Hertz E*
+      /// (from its bodies where 'Contact modulus' = 0) into the model's
+      /// parameters; a scene-wide Hertz reference is refused.
+      void
+      parse_pairs(const Signorini::Contact::PairsParameters &pairs);
     };
   } // namespace Parameters
 

@@ -93,6 +93,11 @@ namespace Signorini
     bool
     placed() const;
 
+    /// The boundary ids of the built shape in dimension @p dim (the
+    /// shape's ids, documented with 'Shape', plus 'Boundary id offset').
+    std::vector<unsigned int>
+    boundary_ids(const unsigned int dim) const;
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -122,7 +127,9 @@ namespace Signorini
     std::string  gmsh_file;
     unsigned int global_refinements = 0;
     unsigned int        local_refinements = 0;
+    /// The centres of the locally refined balls, dim numbers each.
     std::vector<double> local_center;
+    unsigned int        local_center_count = 1;
     double              local_radius = 0.;
 
     static void
