@@ -753,7 +753,7 @@ namespace Signorini
     void
     MultiContact<dim>::write_summary(Json &block) const
     {
-      this->write_common_summary(block, "pairs");
+      this->write_common_summary(block, "contacts");
       Json list = Json::array();
       for (unsigned int k = 0; k < parts.size(); ++k)
         {
@@ -761,6 +761,10 @@ namespace Signorini
           Json        part;
           part["name"] = PairsParameters::key(k);
           p.model->write_summary(part);
+          if (p.two_body) // its own description says "body 2"
+            part["target"] = "the body of boundary " +
+                             std::to_string(static_cast<unsigned int>(p.target)) + ", " +
+                             (prm.two_body.integral ? "integral" : "nodal") + " form";
           part["penalty scale"] = p.scale;
           list.push_back(part);
         }

@@ -156,8 +156,9 @@ namespace Signorini
       std::optional<unsigned long long>
       evaluated_pairs() const override;
 
-      /// The common entries, then "pairs": one block per part (its own
-      /// summary block with its name, boundaries and penalty scale).
+      /// The common entries ("contacts": the description), then "pairs":
+      /// one block per part (its own summary block with its name,
+      /// boundaries and penalty scale).
       void
       write_summary(Json &block) const override;
 
