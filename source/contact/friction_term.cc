@@ -113,11 +113,41 @@ namespace Signorini
     }
 
     template <int dim>
+    std::vector<Tensor<1, dim>>
+    NodeFriction<dim>::increments(const VectorType &u, std::vector<bool> &has) const
+    {
+      const auto                 &nodes = this->boundary().nodes();
+      std::vector<Tensor<1, dim>> du(nodes.size());
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          du[k][c] = u[nodes[k].dofs[c]] - reference[k][c];
+      subtract_partners(u, du, has);
+      return du;
+    }
+
+    template <int dim>
+    void
+    NodeFriction<dim>::coupling(const unsigned int k, Coupling &c) const
+    {
+      const auto &node = this->boundary().nodes()[k];
+      c.dofs.assign(node.dofs.begin(), node.dofs.begin() + dim);
+      c.components.resize(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        c.components[d] = d;
+      c.factors.assign(dim, 1.);
+      add_partner_coupling(k, c);
+    }
+
+    template <int dim>
     void
     NodeFriction<dim>::start_step(const VectorType &u, const double time)
     {
       const auto &nodes = this->boundary().nodes();
-      set_reference(u);
+      reference.resize(nodes.size());
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          reference[k][c] = u[nodes[k].dofs[c]];
+      set_partner_reference(u);
       started = true;
       laws.clear();
       for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -329,43 +359,6 @@ namespace Signorini
           normal_forces[k] = std::max(0., forces[k]) * s.grad.norm();
           bases[k]         = tangent_basis(s.grad);
         }
-    }
-
-    template <int dim>
-    void
-    RigidFriction<dim>::set_reference(const VectorType &u)
-    {
-      const auto &nodes = foundation.nodes();
-      reference.resize(nodes.size());
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        for (unsigned int c = 0; c < dim; ++c)
-          reference[k][c] = u[nodes[k].dofs[c]];
-    }
-
-    template <int dim>
-    std::vector<Tensor<1, dim>>
-    RigidFriction<dim>::increments(const VectorType &u, std::vector<bool> &has) const
-    {
-      const auto                 &nodes = foundation.nodes();
-      std::vector<Tensor<1, dim>> du(nodes.size());
-      has.assign(nodes.size(), true);
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        for (unsigned int c = 0; c < dim; ++c)
-          du[k][c] = u[nodes[k].dofs[c]] - reference[k][c];
-      return du;
-    }
-
-    template <int dim>
-    void
-    RigidFriction<dim>::coupling(const unsigned int                    k,
-                                 typename NodeFriction<dim>::Coupling &c) const
-    {
-      c.dofs.assign(foundation.nodes()[k].dofs.begin(),
-                    foundation.nodes()[k].dofs.begin() + dim);
-      c.components.resize(dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        c.components[d] = d;
-      c.factors.assign(dim, 1.);
     }
 
     template <int dim>

@@ -26,7 +26,7 @@ namespace Signorini
       const std::vector<double> &forces = record.forces();
       const auto                 faces  = geometry.current_faces(u);
       // The normal and lambda from the closest point now; the slip from
-      // the material point of the step's start (set_reference()), kept,
+      // the material point of the step's start (set_partner_reference()), kept,
       // or paired now for a node that had none (it was farther than a
       // face from body 2).
       const auto now = geometry.node_partners(u, faces);
@@ -58,13 +58,8 @@ namespace Signorini
 
     template <int dim>
     void
-    TwoBodyFriction<dim>::set_reference(const VectorType &u)
+    TwoBodyFriction<dim>::set_partner_reference(const VectorType &u)
     {
-      const auto &nodes = geometry.nodes();
-      reference.resize(nodes.size());
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        for (unsigned int c = 0; c < dim; ++c)
-          reference[k][c] = u[nodes[k].dofs[c]];
       reference_faces = geometry.current_faces(u);
       // The material point of body 2 each node touches at the step's
       // start: its slip over the step is measured against that point for
@@ -77,37 +72,27 @@ namespace Signorini
     }
 
     template <int dim>
-    std::vector<Tensor<1, dim>>
-    TwoBodyFriction<dim>::increments(const VectorType &u, std::vector<bool> &has) const
+    void
+    TwoBodyFriction<dim>::subtract_partners(const VectorType            &u,
+                                            std::vector<Tensor<1, dim>> &du,
+                                            std::vector<bool>           &has) const
     {
-      const auto                 &nodes = geometry.nodes();
-      const auto                  faces = geometry.current_faces(u);
-      std::vector<Tensor<1, dim>> du(nodes.size());
-      has.assign(nodes.size(), false);
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          if (k >= partners.size() || partners[k].face < 0)
-            continue;
-          has[k] = true;
-          for (unsigned int c = 0; c < dim; ++c)
-            du[k][c] = u[nodes[k].dofs[c]] - reference[k][c];
-          du[k] -= geometry.partner_displacement(faces, partners[k]) -
-                   geometry.partner_displacement(reference_faces, partners[k]);
-        }
-      return du;
+      const auto faces = geometry.current_faces(u);
+      has.assign(du.size(), false);
+      for (unsigned int k = 0; k < du.size(); ++k)
+        if (k < partners.size() && partners[k].face >= 0)
+          {
+            has[k] = true;
+            du[k] -= geometry.partner_displacement(faces, partners[k]) -
+                     geometry.partner_displacement(reference_faces, partners[k]);
+          }
     }
 
     template <int dim>
     void
-    TwoBodyFriction<dim>::coupling(const unsigned int                    k,
-                                   typename NodeFriction<dim>::Coupling &c) const
+    TwoBodyFriction<dim>::add_partner_coupling(const unsigned int                    k,
+                                               typename NodeFriction<dim>::Coupling &c) const
     {
-      const auto &node = geometry.nodes()[k];
-      c.dofs.assign(node.dofs.begin(), node.dofs.end());
-      c.components.resize(dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        c.components[d] = d;
-      c.factors.assign(dim, 1.);
       const Partner &p = partners[k];
       for (unsigned int v = 0; v < TwoBodyContact<dim>::n_face_vertices; ++v)
         for (unsigned int d = 0; d < dim; ++d)

@@ -199,8 +199,15 @@ namespace Signorini
                   partners[k] = p;
                 }
             }
+          // The normal interpolated from the vertex normals.
+          Partner &p = partners[k];
+          if (p.face >= 0)
+            {
+              for (unsigned int v = 0; v < n_face_vertices; ++v)
+                p.normal += p.shape[v] * vertex_normals.at(faces2[p.face].dofs[v * dim]);
+              p.normal /= p.normal.norm();
+            }
         }
-      set_normals(faces, partners, vertex_normals);
       return partners;
     }
 
@@ -228,24 +235,6 @@ namespace Signorini
             vertex_normals[faces2[f].dofs[v * dim]] += faces2[f].h * n;
         }
       return vertex_normals;
-    }
-
-    template <int dim>
-    void
-    TwoBodyContact<dim>::set_normals(
-      const std::vector<IndicatorFace<dim>>                   &faces,
-      std::vector<Partner>                                    &partners,
-      const std::map<types::global_dof_index, Tensor<1, dim>> &normals) const
-    {
-      const auto &vertex_normals = normals.empty() ? this->vertex_normals(faces) : normals;
-      for (auto &p : partners)
-        if (p.face >= 0)
-          {
-            p.normal = Tensor<1, dim>();
-            for (unsigned int v = 0; v < n_face_vertices; ++v)
-              p.normal += p.shape[v] * vertex_normals.at(faces2[p.face].dofs[v * dim]);
-            p.normal /= p.normal.norm();
-          }
     }
 
     template <int dim>
@@ -518,8 +507,6 @@ namespace Signorini
     template bool TwoBodyContact<3>::needs_new_pattern(const VectorType &u);
     template std::vector<typename TwoBodyContact<2>::Partner> TwoBodyContact<2>::node_partners(const VectorType &u, const std::vector<IndicatorFace<2>> &faces) const;
     template std::vector<typename TwoBodyContact<3>::Partner> TwoBodyContact<3>::node_partners(const VectorType &u, const std::vector<IndicatorFace<3>> &faces) const;
-    template void TwoBodyContact<2>::set_normals(const std::vector<IndicatorFace<2>> &, std::vector<Partner> &, const std::map<types::global_dof_index, Tensor<1, 2>> &) const;
-    template void TwoBodyContact<3>::set_normals(const std::vector<IndicatorFace<3>> &, std::vector<Partner> &, const std::map<types::global_dof_index, Tensor<1, 3>> &) const;
     template Tensor<1, 2> TwoBodyContact<2>::partner_displacement(const std::vector<IndicatorFace<2>> &faces, const Partner &partner) const;
     template Tensor<1, 3> TwoBodyContact<3>::partner_displacement(const std::vector<IndicatorFace<3>> &faces, const Partner &partner) const;
     template bool TwoBodyContact<2>::admissible(const VectorType &u) const;

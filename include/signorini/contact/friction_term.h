@@ -214,20 +214,40 @@ namespace Signorini
           std::vector<double>            &normal_forces,
           std::vector<TangentBasis<dim>> &bases) = 0;
 
-      /// Keep what the slip is measured from: the state @p u at the
-      /// step's start (collective).
+      /// Keep what the slip is measured against beyond the nodes' own
+      /// displacements (which this class keeps): the partner's state at
+      /// the step's start @p u (collective; nothing by default).
       virtual void
-      set_reference(const VectorType &u) = 0;
+      set_partner_reference(const VectorType &u)
+      {
+        (void)u;
+      }
 
-      /// The relative displacement increment du_k of every node since
-      /// set_reference() at the ghosted @p u (collective). A node whose
-      /// term is off (no partner) gets has[k] = false.
-      virtual std::vector<Tensor<1, dim>>
-      increments(const VectorType &u, std::vector<bool> &has) const = 0;
-
-      /// Node k's coupling (called only for nodes with has[k]).
+      /**
+       * Subtract from each node's displacement increment @p du (since the
+       * step's start, at the ghosted @p u) that of its partner, and say in
+       * @p has which nodes have one (collective). By default the partner
+       * is fixed: every node has one and du stays.
+       */
       virtual void
-      coupling(const unsigned int k, Coupling &c) const = 0;
+      subtract_partners(const VectorType            &u,
+                        std::vector<Tensor<1, dim>> &du,
+                        std::vector<bool>           &has) const
+      {
+        (void)u;
+        (void)du;
+        has.assign(du.size(), true);
+      }
+
+      /// Append node k's partner's DoFs to its coupling @p c, which holds
+      /// the node's own (called only for nodes with a partner; nothing by
+      /// default).
+      virtual void
+      add_partner_coupling(const unsigned int k, Coupling &c) const
+      {
+        (void)k;
+        (void)c;
+      }
 
       /// The constraints to condense node terms with (collective; by
       /// default @p constraints).
@@ -247,6 +267,17 @@ namespace Signorini
       void
       lag_all(const VectorType &u);
 
+      /// The relative increment du_k of every node at the ghosted @p u:
+      /// its own since the step's start, minus its partner's (has[k]:
+      /// whether it has one; collective).
+      std::vector<Tensor<1, dim>>
+      increments(const VectorType &u, std::vector<bool> &has) const;
+
+      /// Node k's coupling: its own DoFs, then its partner's.
+      void
+      coupling(const unsigned int k, Coupling &c) const;
+
+      std::vector<Tensor<1, dim>>      reference; // u_n at the nodes
       std::vector<double>              lambda;
       AndersonMixing                   mixing; // of lambda over the outer loop
       double                           last_change = 0.; // update()'s last
@@ -283,22 +314,11 @@ namespace Signorini
           std::vector<double>            &normal_forces,
           std::vector<TangentBasis<dim>> &bases) override;
 
-      void
-      set_reference(const VectorType &u) override;
-
-      std::vector<Tensor<1, dim>>
-      increments(const VectorType &u, std::vector<bool> &has) const override;
-
-      void
-      coupling(const unsigned int k,
-               typename NodeFriction<dim>::Coupling &c) const override;
-
       std::vector<types::global_dof_index>
       history_dofs() const override;
 
     private:
-      const RigidFoundation<dim>  &foundation;
-      std::vector<Tensor<1, dim>> reference; // u_n at the nodes
+      const RigidFoundation<dim> &foundation;
     };
 
     /**

@@ -375,23 +375,13 @@ namespace Signorini
        * ghosted state @p u, with @p faces = current_faces(u): the closest
        * point of the faces whose box, grown by one face size, holds the
        * node (2D: on the segment; 3D: on the bilinear face), its vertex
-       * weights and body 2's outward unit normal there (away from the
-       * opposite face). A node near no face gets face = -1.
+       * weights and body 2's outward unit normal there: the vertex
+       * normals (vertex_normals()) interpolated with the weights. A node
+       * near no face gets face = -1.
        */
       std::vector<Partner>
       node_partners(const VectorType                      &u,
                     const std::vector<IndicatorFace<dim>> &faces) const;
-
-      /**
-       * Set the normals of @p partners (their faces and weights kept) to
-       * body 2's outward normal there for the faces @p faces: the
-       * vertex normals (vertex_normals(), computed here if @p normals is
-       * empty) interpolated with the weights, normalised.
-       */
-      void
-      set_normals(const std::vector<IndicatorFace<dim>>                   &faces,
-                  std::vector<Partner>                                    &partners,
-                  const std::map<types::global_dof_index, Tensor<1, dim>> &normals = {}) const;
 
       /// Body 2's displacement at @p partner when its faces are @p faces
       /// (current_faces() at some state).

@@ -52,14 +52,16 @@ namespace Signorini
           std::vector<TangentBasis<dim>> &bases) override;
 
       void
-      set_reference(const VectorType &u) override;
-
-      std::vector<Tensor<1, dim>>
-      increments(const VectorType &u, std::vector<bool> &has) const override;
+      set_partner_reference(const VectorType &u) override;
 
       void
-      coupling(const unsigned int k,
-               typename NodeFriction<dim>::Coupling &c) const override;
+      subtract_partners(const VectorType            &u,
+                        std::vector<Tensor<1, dim>> &du,
+                        std::vector<bool>           &has) const override;
+
+      void
+      add_partner_coupling(const unsigned int                    k,
+                           typename NodeFriction<dim>::Coupling &c) const override;
 
       const AffineConstraints<double> &
       condensation(const AffineConstraints<double> &constraints) const override
@@ -77,7 +79,6 @@ namespace Signorini
       TwoBodyContact<dim>          &geometry;
       std::vector<Partner>          partners;
       std::vector<IndicatorFace<dim>> reference_faces; // at u_n
-      std::vector<Tensor<1, dim>>     reference;       // u_n at the nodes
     };
   } // namespace Contact
 } // namespace Signorini
