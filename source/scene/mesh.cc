@@ -256,7 +256,8 @@ namespace Signorini
                       "rectangle",
                       Patterns::Selection("rectangle|quarter disk|half disk|die|"
                                           "octant ball|quarter ball|hemisphere|"
-                                          "quarter cylinder|half cylinder"),
+                                          "quarter cylinder|half cylinder|ring|half ring|"
+                                          "tube|half tube"),
                       "Built-in shape of the body (used when Mesh > Source = "
                       "generated). y is vertical in 2D, z in 3D. "
                       "rectangle: a rectangle (2D) or box (3D) "
@@ -286,7 +287,17 @@ namespace Signorini
                       "surface, 1 plane x = cx, 2 flat top z = cz, 3/4 the "
                       "ends y min/max. half cylinder (3D): the half disk "
                       "{z <= cz} extruded likewise, ids 0 curved surface, "
-                      "1 flat top, 2/3 the ends y min/max. Curved surfaces "
+                      "1 flat top, 2/3 the ends y min/max. ring (2D): the "
+                      "annulus 'Inner radius' <= |x - c| <= 'Radius' "
+                      "around the Center, ids 0 inner circle, 1 outer "
+                      "circle. half ring (2D): its right half {x >= cx}, "
+                      "ids 0 inner arc, 1 outer arc, 2 the two straight "
+                      "edges on x = cx. tube (3D): the ring's annulus in "
+                      "the x-z plane extruded along y over 'Length' (y in "
+                      "[cy - L/2, cy + L/2]), ids 0 inner surface, 1 outer "
+                      "surface, 2/3 the ends y min/max. half tube (3D): its "
+                      "half {x >= cx}, ids 0 inner, 1 outer, 2 the cut "
+                      "plane x = cx, 3/4 the ends y min/max. Curved surfaces "
                       "carry a spherical or cylindrical manifold: refined "
                       "vertices lie on the exact surface.");
     prm.declare_entry("Lower corner",
@@ -311,6 +322,9 @@ namespace Signorini
                       "it parallel to y).");
     prm.declare_entry("Radius", "1", Patterns::Double(),
                       "Disks, ball parts and cylinders: radius [length], > 0.");
+    prm.declare_entry("Inner radius", "0.5", Patterns::Double(),
+                      "Ring and half ring: radius of the inner circle "
+                      "[length], > 0 and below 'Radius' (the outer one).");
     prm.declare_entry("Length",
                       "1",
                       Patterns::Double(),
@@ -408,6 +422,18 @@ namespace Signorini
         case Shape::quarter_cylinder:
           n = 5;
           break;
+        case Shape::ring:
+          n = 2;
+          break;
+        case Shape::half_ring:
+          n = 3;
+          break;
+        case Shape::tube:
+          n = 4;
+          break;
+        case Shape::half_tube:
+          n = 5;
+          break;
       }
     std::vector<unsigned int> ids;
     for (unsigned int i = 0; i < n; ++i)
@@ -429,6 +455,10 @@ namespace Signorini
              s == "hemisphere"       ? Shape::hemisphere :
              s == "quarter cylinder" ? Shape::quarter_cylinder :
              s == "half cylinder"    ? Shape::half_cylinder :
+             s == "ring"             ? Shape::ring :
+             s == "half ring"        ? Shape::half_ring :
+             s == "tube"             ? Shape::tube :
+             s == "half tube"        ? Shape::half_tube :
                                        Shape::half_disk);
     lower_corner       = get_list<double>(prm, "Lower corner", dim, context);
     upper_corner       = get_list<double>(prm, "Upper corner", dim, context);
@@ -439,7 +469,10 @@ namespace Signorini
     boundary_id_offset = prm.get_integer("Boundary id offset");
     arc_sag            = prm.get_double("Arc sag");
     upward             = (prm.get("Orientation") == "up");
-    if (upward && (shape == Shape::rectangle || shape == Shape::die))
+    inner_radius       = prm.get_double("Inner radius");
+    const bool ring = shape == Shape::ring || shape == Shape::half_ring ||
+                      shape == Shape::tube || shape == Shape::half_tube;
+    if (upward && (shape == Shape::rectangle || shape == Shape::die || ring))
       throw InputError(context + " > Orientation",
                        "'up' applies to the disks, ball parts and "
                        "cylinders, not to '" + s + "'");
@@ -464,19 +497,19 @@ namespace Signorini
                            "direction, got lower = '" +
                              prm.get("Lower corner") + "', upper = '" +
                              prm.get("Upper corner") + "'");
-    const bool only_2d =
-      shape == Shape::quarter_disk || shape == Shape::half_disk;
+    const bool only_2d = shape == Shape::quarter_disk || shape == Shape::half_disk ||
+                         shape == Shape::ring || shape == Shape::half_ring;
     const bool only_3d = !only_2d && shape != Shape::rectangle &&
                          shape != Shape::die;
     if (only_2d && dim != 2)
       throw InputError(context + " > Shape",
                        "'" + s + "' is a 2D shape; in 3D use a ball part "
-                       "(octant ball, quarter ball, hemisphere) or a "
-                       "quarter or half cylinder");
+                       "(octant ball, quarter ball, hemisphere), a "
+                       "quarter or half cylinder or a (half) tube");
     if (only_3d && dim != 3)
       throw InputError(context + " > Shape",
-                       "'" + s + "' is a 3D shape; in 2D use a quarter disk "
-                       "or a half disk");
+                       "'" + s + "' is a 3D shape; in 2D use a quarter disk, "
+                       "a half disk or a (half) ring");
     if (shape == Shape::die)
       {
         const double height = upper_corner[dim - 1] - lower_corner[dim - 1];
@@ -491,7 +524,12 @@ namespace Signorini
         if (!(radius > 0.) || !std::isfinite(radius))
           throw InputError(context + " > Radius",
                            "must be > 0, got " + prm.get("Radius"));
-        if (shape == Shape::quarter_cylinder || shape == Shape::half_cylinder)
+        if (ring && !(inner_radius > 0. && inner_radius < radius &&
+                      inner_radius >= min_size_over_place * radius))
+          throw InputError(context + " > Inner radius",
+                           "must be > 0 and below 'Radius' (" + prm.get("Radius") +
+                             "), got " + prm.get("Inner radius"));
+        if (extruded_along_y())
           {
             if (!(length > 0.) || !std::isfinite(length))
               throw InputError(context + " > Length",
@@ -524,7 +562,7 @@ namespace Signorini
                            "'" + prm.get("Center") +
                              "': a mesh's coordinates must lie within +-1e30");
         check_size(radius, place, context + " > Radius", prm.get("Radius"));
-        if (shape == Shape::quarter_cylinder || shape == Shape::half_cylinder)
+        if (extruded_along_y())
           check_size(length, place, context + " > Length", prm.get("Length"));
       }
     parse_placement(prm, dim, context);
@@ -572,8 +610,7 @@ namespace Signorini
       }
     else
       {
-        const bool cylinder =
-          shape == Shape::quarter_cylinder || shape == Shape::half_cylinder;
+        const bool cylinder = extruded_along_y();
         size = cylinder ? std::min(radius, length) : radius;
         for (unsigned int d = 0; d < dim; ++d)
           place = std::max(place, std::abs(center[d]) + radius +
@@ -952,6 +989,77 @@ namespace Signorini
       manifolds.push_back({transfinite_id, ManifoldSpec<3>::Kind::transfinite, axis_point});
     }
 
+    /**
+     * A tube or half tube: the ring or half ring in the x-z plane (built as
+     * in 2D), extruded along y over the length and turned so that y is the
+     * axis, with one CylindricalManifold on every cell (the cut plane and
+     * the ends keep their angle or their y under it). Ids by position:
+     * 0 inner, 1 outer surface, (half tube: 2 the cut plane x = cx,) then
+     * the ends y min, y max.
+     */
+    void
+    build_tube(const BodyGeometry           &g,
+               const unsigned int            body_index,
+               Triangulation<3>             &tria,
+               std::vector<ManifoldSpec<3>> &manifolds)
+    {
+      using Shape                = BodyGeometry::Shape;
+      const bool   half          = g.shape == Shape::half_tube;
+      BodyGeometry section       = g;
+      section.boundary_id_offset = 0;
+      section.shape              = half ? Shape::half_ring : Shape::ring;
+      section.center             = {g.center[0], g.center[2]};
+      const double y_min         = g.center[1] - 0.5 * g.length;
+      const double y_max         = g.center[1] + 0.5 * g.length;
+      const double wall          = g.radius - g.inner_radius;
+      // About square coarse cells along the axis, as across the wall.
+      const unsigned int slices  = std::max(1l, std::lround(g.length / wall));
+      Triangulation<2>             flat;
+      std::vector<ManifoldSpec<2>> section_manifolds;
+      build_body<2>(section, 0, 0, flat, section_manifolds);
+      GridGenerator::extrude_triangulation(flat, slices + 1, g.length, tria);
+      tria.reset_all_manifolds();
+      // (x, y, z) of the extrusion -> (x, y_max - z, y): the section's y
+      // becomes z and the extrusion runs along y (a rotation: the cells
+      // keep their orientation).
+      GridTools::transform(
+        [y_max](const Point<3> &p) { return Point<3>(p[0], y_max - p[2], p[1]); },
+        tria);
+      const Point<3>           axis_point(g.center[0], 0., g.center[2]);
+      const types::manifold_id tube_id = 2 * body_index;
+      const double             tol     = 1e-8 * std::max(g.radius, g.length);
+      const auto radius_of = [&](const Point<3> &p) {
+        return std::hypot(p[0] - g.center[0], p[2] - g.center[2]);
+      };
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          cell->set_all_manifold_ids(tube_id);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                bool inner = true, outer = true, cut = true, low = true, high = true;
+                for (const auto v : face->vertex_indices())
+                  {
+                    const Point<3> p = face->vertex(v);
+                    inner = inner && std::abs(radius_of(p) - g.inner_radius) < tol;
+                    outer = outer && std::abs(radius_of(p) - g.radius) < tol;
+                    cut   = cut && std::abs(p[0] - g.center[0]) < tol;
+                    low   = low && std::abs(p[1] - y_min) < tol;
+                    high  = high && std::abs(p[1] - y_max) < tol;
+                  }
+                const types::boundary_id ends = half ? 3 : 2;
+                face->set_boundary_id(inner ? 0 :
+                                      outer ? 1 :
+                                      low   ? ends :
+                                      high  ? ends + 1 :
+                                      cut   ? 2 :
+                                              numbers::invalid_boundary_id);
+                Assert(inner || outer || cut || low || high, ExcInternalError());
+              }
+        }
+      manifolds.push_back({tube_id, ManifoldSpec<3>::Kind::cylindrical, axis_point});
+    }
+
     template <int dim>
     void
     build_curved_3d(const BodyGeometry             &g,
@@ -965,6 +1073,8 @@ namespace Signorini
           if (g.shape == Shape::octant_ball || g.shape == Shape::quarter_ball ||
               g.shape == Shape::hemisphere)
             build_ball_part(g, body_index, tria, manifolds);
+          else if (g.shape == Shape::tube || g.shape == Shape::half_tube)
+            build_tube(g, body_index, tria, manifolds);
           else
             build_extruded(g, body_index, tria, manifolds);
         }
@@ -1054,6 +1164,48 @@ namespace Signorini
           manifolds.push_back({arc_id, ManifoldSpec<dim>::Kind::spherical, center});
           manifolds.push_back(
             {transfinite_id, ManifoldSpec<dim>::Kind::transfinite, center});
+        }
+      else if (g.shape == BodyGeometry::Shape::ring ||
+               g.shape == BodyGeometry::Shape::half_ring)
+        {
+          // The annulus in polar cells: about square cells around the
+          // half circumference (the full ring has twice the half ring's
+          // cells, so that the two meshes are the same on x >= cx).
+          Assert(dim == 2, ExcInternalError());
+          const Point<dim>   center = to_point<dim>(g.center);
+          const unsigned int half_cells = static_cast<unsigned int>(std::ceil(
+            0.5 * numbers::PI * (g.radius + g.inner_radius) / (g.radius - g.inner_radius)));
+          if (g.shape == BodyGeometry::Shape::ring)
+            GridGenerator::hyper_shell(tria, center, g.inner_radius, g.radius,
+                                       2 * std::max(half_cells, 2u));
+          else
+            GridGenerator::half_hyper_shell(tria, center, g.inner_radius, g.radius,
+                                            std::max(half_cells, 2u));
+          tria.reset_all_manifolds();
+          const types::manifold_id polar_id = 2 * body_index;
+          const double             tol      = 1e-8 * g.radius;
+          for (const auto &cell : tria.active_cell_iterators())
+            {
+              cell->set_all_manifold_ids(polar_id);
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary())
+                  {
+                    auto on_circle = [&](const double r) {
+                      return std::abs(face->vertex(0).distance(center) - r) < tol &&
+                             std::abs(face->vertex(1).distance(center) - r) < tol;
+                    };
+                    if (on_circle(g.inner_radius))
+                      face->set_boundary_id(0);
+                    else if (on_circle(g.radius))
+                      face->set_boundary_id(1);
+                    else
+                      {
+                        face->set_boundary_id(2);
+                        face->set_manifold_id(numbers::flat_manifold_id);
+                      }
+                  }
+            }
+          manifolds.push_back({polar_id, ManifoldSpec<dim>::Kind::spherical, center});
         }
       else
         {

@@ -67,8 +67,21 @@ namespace Signorini
       quarter_ball,
       hemisphere,
       quarter_cylinder,
-      half_cylinder
+      half_cylinder,
+      ring,
+      half_ring,
+      tube,
+      half_tube
     };
+
+    /// A quarter or half cylinder, a tube or a half tube: a 2D section
+    /// extruded along y over 'Length'.
+    bool
+    extruded_along_y() const
+    {
+      return shape == Shape::quarter_cylinder || shape == Shape::half_cylinder ||
+             shape == Shape::tube || shape == Shape::half_tube;
+    }
 
     Shape                     shape = Shape::rectangle;
     std::vector<double>       lower_corner;
@@ -76,6 +89,7 @@ namespace Signorini
     std::vector<unsigned int> subdivisions;
     std::vector<double>       center;
     double                    radius             = 1.;
+    double                    inner_radius       = 0.5; // ring, half ring
     double                    length             = 1.;
     double                    arc_sag            = 0.3;
     /// Disks, ball parts, cylinders: the upper part (y >= cy in 2D,
