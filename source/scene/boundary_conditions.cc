@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -21,6 +22,16 @@ namespace Signorini
       "components', components from x, y, z, e.g. '2: y, 0: x' for a "
       "roller on boundary 2 and another on boundary 0, or '2: xy' to "
       "clamp boundary 2.");
+    prm.declare_entry(
+      "Fixed points",
+      "",
+      Patterns::Anything(),
+      "Zero displacement at single mesh vertices: a ';'-separated list of "
+      "'coordinates: components' [length], e.g. '0, 0: x; 0, 12.7: x' to "
+      "hold x at two vertices on the line x = 0 (the rigid-body motion a "
+      "full ring between frictionless plates would have). Each point must "
+      "be a vertex of the mesh (within 1e-8 of the scene's size); the "
+      "components as in 'Fixed boundaries'.");
     prm.declare_entry(
       "Prescribed boundaries",
       "",
@@ -206,6 +217,7 @@ namespace Signorini
     constants = parse_constants(prm.get("Function constants"),
                                 "Boundary conditions > Function constants");
     fixed_boundaries        = prm.get("Fixed boundaries");
+    fixed_points            = prm.get("Fixed points");
     prescribed_boundaries   = prm.get("Prescribed boundaries");
     prescribed_displacement = prm.get("Prescribed displacement");
     traction_boundaries     = prm.get("Traction boundaries");
@@ -256,6 +268,44 @@ namespace Signorini
                                    " is both fixed and prescribed");
               o[c] = part.prescribed;
             }
+      }
+
+    points.clear();
+    for (const std::string &item : Utilities::split_string_list(p.fixed_points, ';'))
+      {
+        const std::vector<std::string> kv = Utilities::split_string_list(item, ':');
+        FixedPoint                      fixed;
+        fixed.text = item;
+        fixed.components.assign(dim, false);
+        std::vector<std::string> coordinates;
+        if (kv.size() == 2)
+          coordinates = Utilities::split_string_list(kv[0], ',');
+        bool ok = kv.size() == 2 && coordinates.size() == dim && !kv[1].empty();
+        for (unsigned int d = 0; ok && d < dim; ++d)
+          try
+            {
+              fixed.point[d] = Utilities::string_to_double(coordinates[d]);
+              ok             = std::isfinite(fixed.point[d]);
+            }
+          catch (...)
+            {
+              ok = false;
+            }
+        if (!ok)
+          throw InputError(ctx + "Fixed points",
+                           "'" + item + "' is not of the form 'coordinates: components' "
+                           "with " + std::to_string(dim) + " coordinates (e.g. '" +
+                             (dim == 2 ? "0, 0: x" : "0, 0, 0: xy") + "')");
+        for (const char c : kv[1])
+          {
+            const int comp = (c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1);
+            if (comp < 0 || comp >= dim)
+              throw InputError(ctx + "Fixed points",
+                               "component '" + std::string(1, c) + "' in '" + item +
+                                 "' is not one of " + (dim == 2 ? "x, y" : "x, y, z"));
+            fixed.components[comp] = true;
+          }
+        points.push_back(fixed);
       }
 
     prescribed_function =

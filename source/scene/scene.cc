@@ -552,8 +552,42 @@ namespace Signorini
           static_cast<const Function<dim> &>(zero),
         constraints,
         ComponentMask(part.components));
+    add_fixed_points(constraints);
     constraints.close();
     return constraints;
+  }
+
+  template <int dim>
+  void
+  Scene<dim>::add_fixed_points(AffineConstraints<double> &constraints) const
+  {
+    // Each point's vertex: the nearest one within 1e-8 of the mesh's size
+    // (checked once, on every rank together, when first used).
+    if (bc.fixed_points().empty())
+      return;
+    const double size = GridTools::diameter(triangulation);
+    for (const auto &fixed : bc.fixed_points())
+      {
+        bool found = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const auto v : cell->vertex_indices())
+              if (cell->vertex(v).distance(fixed.point) <= 1e-8 * size)
+                {
+                  found = true;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    if (fixed.components[c])
+                      {
+                        const auto dof = cell->vertex_dof_index(v, c);
+                        if (!constraints.is_constrained(dof))
+                          constraints.add_line(dof);
+                      }
+                }
+        if (!Utilities::MPI::logical_or(found, triangulation.get_communicator()))
+          throw InputError("Boundary conditions > Fixed points",
+                           "'" + fixed.text + "' is not a vertex of the mesh "
+                           "(none within 1e-8 of the scene's size)");
+      }
   }
 
   template <int dim>

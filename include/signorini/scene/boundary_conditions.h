@@ -29,6 +29,7 @@ namespace Signorini
   struct BoundaryConditionParameters
   {
     std::string                   fixed_boundaries;
+    std::string                   fixed_points;
     std::string                   prescribed_boundaries;
     std::string                   prescribed_displacement;
     std::string                   traction_boundaries;
@@ -85,6 +86,21 @@ namespace Signorini
       return dirichlet;
     }
 
+    /// A mesh vertex whose displacement components are held at zero
+    /// ('Fixed points': e.g. a rigid-body mode that no boundary can stop).
+    struct FixedPoint
+    {
+      Point<dim>        point;
+      std::vector<bool> components; // dim entries
+      std::string       text;       // as written, for messages
+    };
+
+    const std::vector<FixedPoint> &
+    fixed_points() const
+    {
+      return points;
+    }
+
     /// The prescribed displacement u_D(x, t) (dim components).
     Function<dim> &
     prescribed_displacement() const
@@ -123,6 +139,7 @@ namespace Signorini
 
   private:
     std::vector<DirichletPart>             dirichlet;
+    std::vector<FixedPoint>                points;
     std::unique_ptr<FunctionParser<dim>>   prescribed_function;
     std::set<types::boundary_id>           traction_ids;
     std::unique_ptr<FunctionParser<dim>>   traction;

@@ -122,6 +122,11 @@ namespace Signorini
     AffineConstraints<double>
     boundary_constraints(const double time, const bool homogeneous) const;
 
+    /// The zero displacement of 'Fixed points' at their vertices (InputError
+    /// if a point is no vertex of the mesh; collective).
+    void
+    add_fixed_points(AffineConstraints<double> &constraints) const;
+
     /// Hanging nodes, and on Dirichlet DoFs the step from the current
     /// solution to the values at @p time.
     AffineConstraints<double>
