@@ -35,6 +35,31 @@ namespace Signorini
                         "id). A boundary may be the target of one pair and "
                         "the contact boundary of another. Pair K is the "
                         "K-th entry.");
+      prm.declare_entry("Self-contact boundary ids",
+                        "",
+                        Patterns::Anything(),
+                        "Boundary ids, separated by commas, each kept out "
+                        "of its own body (self-contact: a ring or a tube "
+                        "crushed until its inner surface folds onto "
+                        "itself), through the indicator function of that "
+                        "same boundary with the settings of 'Two bodies'; "
+                        "a point is not checked against the faces within "
+                        "'Self-contact exclusion radius' of it. One more "
+                        "pair each, numbered after the two-body pairs and "
+                        "before the foundation boundaries; empty: none.");
+      prm.declare_entry("Self-contact exclusion radius",
+                        "0",
+                        Patterns::Double(0.),
+                        "[length] A point of a self-contact boundary is "
+                        "not checked against a face whose indicator term "
+                        "has a vertex (of the face or of the cell's "
+                        "opposite face) within this distance of it in the "
+                        "reference configuration: its own neighbourhood, "
+                        "which it lies on without touching. Must exceed "
+                        "the largest face of the boundary and stay below "
+                        "the reference distance between the parts of the "
+                        "surface that come into contact (a ring's inner "
+                        "diameter). 0: three times the largest face.");
       prm.declare_entry("Foundation boundary ids",
                         "",
                         Patterns::Anything(),
@@ -99,13 +124,28 @@ namespace Signorini
           if (pair.contact == pair.target)
             throw InputError("Contact > Pairs > " + pairs_key,
                              "'" + entry +
-                               "': the contact and the target boundary must differ");
+                               "': the contact and the target boundary must differ "
+                               "(a boundary kept out of its own body is a "
+                               "'Self-contact boundary ids' entry)");
           for (const auto &other : pairs)
             if (other.contact == pair.contact && other.target == pair.target)
               throw InputError("Contact > Pairs > " + pairs_key,
                                "the pair '" + entry + "' is given twice");
           pairs.push_back(pair);
         }
+      const std::string self_key = "Self-contact boundary ids";
+      for (const auto &entry : Utilities::split_string_list(prm.get(self_key)))
+        {
+          Pair pair;
+          pair.contact = pair.target = boundary_id(entry, self_key);
+          pair.self                  = true;
+          for (const auto &other : pairs)
+            if (other.self && other.contact == pair.contact)
+              throw InputError("Contact > Pairs > " + self_key,
+                               "boundary id " + entry + " is given twice");
+          pairs.push_back(pair);
+        }
+      self_exclusion_radius = prm.get_double("Self-contact exclusion radius");
       const std::string foundation_key = "Foundation boundary ids";
       for (const auto &entry : Utilities::split_string_list(prm.get(foundation_key)))
         {
@@ -167,6 +207,8 @@ namespace Signorini
               pair.target_boundary     = part.target;
               auto model = std::make_unique<TwoBodyContact<dim>>(pair, part.contact,
                                                                  dof_handler, mapping);
+              if (prm.pairs[k].self)
+                model->set_self_contact(prm.self_exclusion_radius);
               // The target nodes' record holds the whole reaction: the
               // pair's action and reaction sum to zero.
               model->set_lumped_reaction(true);
@@ -262,7 +304,8 @@ namespace Signorini
       s << prm.pairs.size() << " two-body pair(s)";
       for (unsigned int k = 0; k < prm.pairs.size(); ++k)
         s << (k == 0 ? " (" : ", ") << static_cast<unsigned int>(prm.pairs[k].contact) << ":"
-          << static_cast<unsigned int>(prm.pairs[k].target) << (k + 1 == prm.pairs.size() ? ")" : "");
+          << static_cast<unsigned int>(prm.pairs[k].target) << (prm.pairs[k].self ? " self" : "")
+          << (k + 1 == prm.pairs.size() ? ")" : "");
       if (!prm.pairs.empty())
         s << ", " << (prm.two_body.integral ? "integral" : "nodal") << " form";
       for (unsigned int k = 0; k < prm.foundation_ids.size(); ++k)
@@ -633,6 +676,8 @@ namespace Signorini
           if (parts[k].two_body)
             for (unsigned int d = 0; d < dim; ++d)
               columns.push_back(key + "_target_force_" + "xyz"[d]);
+          if (parts[k].two_body && parts[k].two_body->self_contact())
+            columns.push_back(key + "_self_contact_force");
           columns.push_back(key + "_contact_area");
         }
       for (unsigned int b = 0; b < prm.body_material_ids.size(); ++b)
@@ -685,6 +730,18 @@ namespace Signorini
             q->estimable = true;
             q->scale     = on_target.norm();
           }
+      if (p.two_body && p.two_body->self_contact())
+        {
+          // The force across the self-contact: every node's force is the
+          // sum of what it feels as a point and as a target vertex, so the
+          // forces sum to zero and each action-reaction is counted twice.
+          double total = 0.;
+          for (const auto &sample : samples)
+            total += sample.force.norm();
+          Quantity *q = add(key + "_self_contact_force",
+                            0.5 * Utilities::MPI::sum(total, dof_handler.get_communicator()));
+          q->estimable = true;
+        }
       // An index, not a pointer: the quantities that follow may move it.
       const std::size_t area = quantities.size();
       add(key + "_contact_area", state.area)->estimable = true;

@@ -312,7 +312,11 @@ namespace Signorini
       const MPI_Comm comm = dof_handler.get_communicator();
       relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
       boundary.setup({contact_boundary}, hanging_constraints);
-      target.setup({prm.target_boundary}, hanging_constraints);
+      // Self-contact: the contact nodes carry every force (no second
+      // record of the same nodes).
+      target.setup(self ? std::set<types::boundary_id>() :
+                          std::set<types::boundary_id>{prm.target_boundary},
+                   hanging_constraints);
       this->nodal_forces.assign((boundary.nodes().size() + target.nodes().size()) * dim,
                                 0.);
 
@@ -321,6 +325,19 @@ namespace Signorini
       mark_face_ends();
       check_boundaries();
       measure_faces();
+      if (self)
+        {
+          // Automatic radius: three of the largest faces, so that a point
+          // skips the faces of its own neighbourhood.
+          if (!(exclusion_radius_ > 0.))
+            {
+              double largest = 0.;
+              for (const auto &f : faces2)
+                largest = std::max(largest, f.h);
+              exclusion_radius_ = 3. * largest;
+            }
+          find_excluded_faces();
+        }
       find_extra_rows(constraints);
 
       stats                = PairStatistics();
@@ -546,6 +563,14 @@ namespace Signorini
         throw InputError("Contact > Two bodies > Target boundary id",
                          "boundary " + std::to_string(prm.target_boundary) +
                            " does not exist in the mesh");
+      if (self)
+        {
+          if (contact_boundary != prm.target_boundary)
+            throw InputError("Contact > Pairs > Self-contact boundary ids",
+                             "self-contact keeps one boundary out of its own "
+                             "body: its target must be the same boundary");
+          return;
+        }
       for (const auto id : all1)
         if (all2.count(id) > 0)
           throw InputError("Contact > Two bodies > Target boundary id",

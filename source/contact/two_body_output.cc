@@ -52,9 +52,9 @@ namespace Signorini
           std::vector<Point<dim>> xg;
           for (const auto &p : points)
             xg.push_back(position(p, u));
-          gauss_ratio = penetration_ratio(xg, faces);
+          gauss_ratio = penetration_ratio(xg, points, faces);
         }
-      const double node_ratio = penetration_ratio(node_positions(u), faces);
+      const double node_ratio = penetration_ratio(node_positions(u), node_points, faces);
       return {Utilities::MPI::max(std::max(node_ratio, gauss_ratio), comm),
               Utilities::MPI::max(prm.integral ? gauss_ratio : node_ratio, comm)};
     }
@@ -75,7 +75,7 @@ namespace Signorini
       const auto          pressures = node_pressures(forces);
       const auto          x         = node_positions(u);
       std::vector<double> depths;
-      penetration_ratio(x, current_faces(u), &depths);
+      penetration_ratio(x, node_points, current_faces(u), &depths);
       std::vector<typename Model<dim>::NodeSample> samples;
       for (unsigned int k = 0; k < nodes().size(); ++k)
         {

@@ -107,8 +107,9 @@ namespace Signorini
           hits.clear();
           tree.query(bgi::intersects(x), std::back_inserter(hits));
           for (const auto &hit : hits)
-            if (!positive_only ||
-                faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.)
+            if (!skips(pts, k, hit.second) &&
+                (!positive_only ||
+                 faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.))
               pairs.emplace_back(k, hit.second);
         }
       return pairs;
@@ -189,6 +190,8 @@ namespace Signorini
           double best = std::numeric_limits<double>::infinity();
           for (const auto &hit : hits)
             {
+              if (skips(node_points, k, hit.second))
+                continue;
               Partner        p;
               Tensor<1, dim> face_normal;
               const double   d = closest_point(faces[hit.second], x, p.shape, face_normal);
@@ -316,11 +319,17 @@ namespace Signorini
       bool                                                   ok = true;
       std::vector<double> values; // Phi of each hit face term
       for (const auto *list : {&node_points, &points})
-        for (const auto &p : *list)
+        for (unsigned int k = 0; k < list->size(); ++k)
           {
-            const Point<dim> x = position(p, u);
+            const Point<dim> x = position((*list)[k], u);
             hits.clear();
             tree.query(bgi::intersects(x), std::back_inserter(hits));
+            if (self)
+              hits.erase(std::remove_if(hits.begin(), hits.end(),
+                                        [&](const auto &hit) {
+                                          return skips(*list, k, hit.second);
+                                        }),
+                         hits.end());
             // The crest is judged along the inward direction of the face of
             // the point's cell that it lies below, the nearest one where a
             // cell has several faces on the target (a corner of the
@@ -404,6 +413,7 @@ namespace Signorini
     template <int dim>
     double
     TwoBodyContact<dim>::penetration_ratio(const std::vector<Point<dim>>         &x,
+                                           const std::vector<Point1>             &list,
                                            const std::vector<IndicatorFace<dim>> &faces,
                                            std::vector<double> *depths) const
     {
@@ -426,6 +436,8 @@ namespace Signorini
           bool   inside = false;
           for (const auto &hit : hits)
             {
+              if (skips(list, k, hit.second))
+                continue;
               const auto  &face = faces[hit.second];
               const double d    = face.depth(x[k], prm.stretch, prm.apex_depth);
               if (d >= 0. && (depth < 0. || d < depth))
@@ -443,6 +455,59 @@ namespace Signorini
             }
         }
       return worst;
+    }
+
+    template <int dim>
+    void
+    TwoBodyContact<dim>::find_excluded_faces()
+    {
+      skip_points.clear();
+      skip_nodes.clear();
+      if (!self)
+        return;
+      // The boxes of the face terms' vertices in the reference
+      // configuration, grown by the radius: a point inside a box may lie
+      // within the radius of one of its vertices.
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+      for (unsigned int i = 0; i < faces2.size(); ++i)
+        {
+          std::vector<Point<dim>> vertices(2 * n_face_vertices);
+          for (unsigned int v = 0; v < 2 * n_face_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              vertices[v][c] = faces2[i].X[v * dim + c];
+          BoundingBox<dim> box(vertices);
+          box.extend(exclusion_radius_);
+          boxes.emplace_back(box, i);
+        }
+      const auto tree = pack_rtree(boxes);
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+      for (auto [list, skip] : {std::make_pair(&points, &skip_points),
+                                std::make_pair(&node_points, &skip_nodes)})
+        {
+          skip->assign(list->size(), {});
+          for (unsigned int k = 0; k < list->size(); ++k)
+            {
+              const Point<dim> &X = (*list)[k].X;
+              hits.clear();
+              tree.query(bgi::intersects(X), std::back_inserter(hits));
+              for (const auto &hit : hits)
+                {
+                  const auto &f = faces2[hit.second];
+                  for (unsigned int v = 0; v < 2 * n_face_vertices; ++v)
+                    {
+                      double d2 = 0.;
+                      for (unsigned int c = 0; c < dim; ++c)
+                        d2 += (f.X[v * dim + c] - X[c]) * (f.X[v * dim + c] - X[c]);
+                      if (d2 < exclusion_radius_ * exclusion_radius_)
+                        {
+                          (*skip)[k].push_back(hit.second);
+                          break;
+                        }
+                    }
+                }
+              std::sort((*skip)[k].begin(), (*skip)[k].end());
+            }
+        }
     }
 
     template <int dim>
@@ -513,8 +578,10 @@ namespace Signorini
     template bool TwoBodyContact<3>::admissible(const VectorType &u) const;
     template double TwoBodyContact<2>::max_step(const VectorType &u, const VectorType &d) const;
     template double TwoBodyContact<3>::max_step(const VectorType &u, const VectorType &d) const;
-    template double TwoBodyContact<2>::penetration_ratio(const std::vector<Point<2>> &x, const std::vector<IndicatorFace<2>> &faces, std::vector<double> *depths) const;
-    template double TwoBodyContact<3>::penetration_ratio(const std::vector<Point<3>> &x, const std::vector<IndicatorFace<3>> &faces, std::vector<double> *depths) const;
+    template double TwoBodyContact<2>::penetration_ratio(const std::vector<Point<2>> &x, const std::vector<Point1> &list, const std::vector<IndicatorFace<2>> &faces, std::vector<double> *depths) const;
+    template double TwoBodyContact<3>::penetration_ratio(const std::vector<Point<3>> &x, const std::vector<Point1> &list, const std::vector<IndicatorFace<3>> &faces, std::vector<double> *depths) const;
+    template void TwoBodyContact<2>::find_excluded_faces();
+    template void TwoBodyContact<3>::find_excluded_faces();
     template std::function<double(const Point<2> &)> TwoBodyContact<2>::band_distance() const;
     template std::function<double(const Point<3> &)> TwoBodyContact<3>::band_distance() const;
   } // namespace Contact

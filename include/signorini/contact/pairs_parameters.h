@@ -28,7 +28,8 @@ namespace Signorini
      * boundary above the rigid foundation of 'Contact > Foundation', in its
      * penalty form. The two-body pairs share the settings of 'Contact > Two
      * bodies' (form, indicator shape, stretch, ...; not its target id).
-     * Pair K is the K-th two-body pair of the list, then the foundation
+     * Pair K is the K-th two-body pair of the list, then the self-contact
+     * boundaries ('Self-contact boundary ids'), then the foundation
      * boundaries in their order.
      */
     struct PairsParameters
@@ -37,9 +38,13 @@ namespace Signorini
       {
         types::boundary_id contact = 0;
         types::boundary_id target  = 0;
+        /// Self-contact: contact == target ('Self-contact boundary ids').
+        bool self = false;
       };
       /// 'Two-body pairs'.
       std::vector<Pair> pairs;
+      /// 'Self-contact exclusion radius' (0: automatic).
+      double self_exclusion_radius = 0.;
       /// 'Foundation boundary ids'.
       std::vector<types::boundary_id> foundation_ids;
       /// 'Contact > Two bodies', shared by the pairs (target id unused).

@@ -357,6 +357,42 @@ namespace Signorini
       static constexpr unsigned int n_target_dofs =
         IndicatorFace<dim>::n_variables - dim;
 
+      /**
+       * Self-contact (issue 51): the contact boundary is kept out of its
+       * own body, the target boundary being the same boundary. A point of
+       * Gamma_C is not evaluated against a face term one of whose vertices
+       * (the face's or the opposite face's) lies within @p exclusion_radius
+       * of the point in the reference configuration: the faces around the
+       * point itself, whose layers it lies on or in without any contact.
+       * The radius must exceed the largest face so that a point never
+       * meets a face term that shares its DoFs; the surfaces that can
+       * touch must lie farther apart than it in the reference
+       * configuration. The force record then holds the contact nodes
+       * alone (each node's force is the sum of what it feels as a contact
+       * point and as a target vertex), and there are no target nodes.
+       * Call before setup().
+       */
+      void
+      set_self_contact(const double exclusion_radius)
+      {
+        self             = true;
+        exclusion_radius_ = exclusion_radius;
+      }
+
+      bool
+      self_contact() const
+      {
+        return self;
+      }
+
+      /// The exclusion radius in use (after setup(): an automatic radius
+      /// resolved).
+      double
+      exclusion_radius() const
+      {
+        return exclusion_radius_;
+      }
+
       /// Current face geometry of every body 2 face (collective).
       std::vector<IndicatorFace<dim>>
       current_faces(const VectorType &u) const;
@@ -521,11 +557,29 @@ namespace Signorini
       PenetrationRatios
       penetration_ratios(const VectorType &u) const;
 
-      /// Largest penetration over face size of the points @p x.
+      /// Largest penetration over face size of the points @p x, the
+      /// current positions of @p list (points or node_points).
       double
       penetration_ratio(const std::vector<Point<dim>>         &x,
+                        const std::vector<Point1>             &list,
                         const std::vector<IndicatorFace<dim>> &faces,
                         std::vector<double>                   *depths = nullptr) const;
+
+      /// Self-contact: for every point of points and node_points, the
+      /// faces it is not evaluated against (sorted).
+      void
+      find_excluded_faces();
+
+      /// Whether point @p k of @p list (points or node_points) skips face
+      /// @p face (self-contact only).
+      bool
+      skips(const std::vector<Point1> &list, const unsigned int k, const unsigned int face) const
+      {
+        if (!self)
+          return false;
+        const auto &skipped = (&list == &points ? skip_points : skip_nodes)[k];
+        return std::binary_search(skipped.begin(), skipped.end(), face);
+      }
 
       std::vector<double>
       node_pressures(const std::vector<double> &forces) const;
@@ -562,6 +616,9 @@ namespace Signorini
       mutable PairStatistics                          stats;
       bool                                            convexified = false;
       bool                                            lumped_reaction = false;
+      bool                                            self = false;
+      double                                          exclusion_radius_ = 0.;
+      std::vector<std::vector<unsigned int>>          skip_points, skip_nodes;
       mutable AffineConstraints<double>               merged;
       /// Body 2's side at the last profile written: the reaction on its
       /// target nodes and their largest pressure (for summary.json).
