@@ -520,6 +520,21 @@ main()
            pairs("    set Two-body pairs = 0:10, 10:99\n" + no_hertz), out);
   run_case("pairs_within_one_body", pairs("    set Two-body pairs = 0:2\n" + no_hertz),
            out);
+  // Self-contact: an id that is no number, one no body has, one given
+  // twice; a pair of one boundary with itself in 'Two-body pairs'.
+  run_case("self_contact_not_an_id", pairs("    set Self-contact boundary ids = inner\n"),
+           out);
+  run_case("self_contact_unknown_boundary",
+           pairs("    set Self-contact boundary ids = 99\n" + no_hertz), out);
+  run_case("self_contact_twice", pairs("    set Self-contact boundary ids = 10, 10\n"),
+           out);
+  run_case("pairs_same_boundary", pairs("    set Two-body pairs = 10:10\n"), out);
+  // Fixed points: no vertex there; a point of one coordinate.
+  run_case("fixed_point_no_vertex",
+           stack("subsection Boundary conditions\n  set Fixed points = 0.123, 4.5: x\nend\n"),
+           out);
+  run_case("fixed_point_format",
+           stack("subsection Boundary conditions\n  set Fixed points = 0: x\nend\n"), out);
   run_case("pairs_hertz_of_no_pair",
            pairs("    subsection Pair 5\n      subsection Hertz reference\n"
                  "        set Line load = 1\n      end\n    end\n"),

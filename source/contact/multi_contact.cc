@@ -858,10 +858,13 @@ namespace Signorini
         const auto                  &p = parsed<PairsParameters>(parameters);
         std::vector<NamedBoundaryId> ids;
         for (const auto &pair : p.pairs)
-          {
-            ids.push_back({"Pairs > Two-body pairs", pair.contact});
-            ids.push_back({"Pairs > Two-body pairs", pair.target});
-          }
+          if (pair.self)
+            ids.push_back({"Pairs > Self-contact boundary ids", pair.contact});
+          else
+            {
+              ids.push_back({"Pairs > Two-body pairs", pair.contact});
+              ids.push_back({"Pairs > Two-body pairs", pair.target});
+            }
         for (const auto id : p.foundation_ids)
           ids.push_back({"Pairs > Foundation boundary ids", id});
         return ids;
