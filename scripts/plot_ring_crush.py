@@ -57,7 +57,8 @@ def main():
         factor = 2. if ("half" in name or name == "ring_crush") else 1.
         line, = ax.plot([STROKE * float(r["time"]) for r in reactions],
                         [factor * abs(float(r["Ry_13"])) for r in reactions],
-                        "o-", ms=3, label="%s: plate reaction" % name)
+                        "o-", ms=3, label="%s%s: plate reaction"
+                        % (name, " (half x 2)" if factor == 2. else ""))
         stroke = [STROKE * float(r["time"]) for r in rows]
         if rows and "pair2_self_contact_force" in rows[0]:
             self_force = [factor * float(r["pair2_self_contact_force"])
