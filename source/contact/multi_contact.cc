@@ -819,9 +819,11 @@ namespace Signorini
           part["name"] = PairsParameters::key(k);
           p.model->write_summary(part);
           if (p.two_body) // its own description says "body 2"
-            part["target"] = "the body of boundary " +
-                             std::to_string(static_cast<unsigned int>(p.target)) + ", " +
-                             (prm.two_body.integral ? "integral" : "nodal") + " form";
+            part["target"] =
+              std::string(p.two_body->self_contact() ? "its own body (self-contact) through boundary " :
+                                                       "the body of boundary ") +
+              std::to_string(static_cast<unsigned int>(p.target)) + ", " +
+              (prm.two_body.integral ? "integral" : "nodal") + " form";
           part["penalty scale"] = p.scale;
           list.push_back(part);
         }

@@ -175,6 +175,20 @@ namespace Signorini
       c["stretch"]           = prm.stretch;
       c["indicator shape"] =
         prm.shape == IndicatorShape::partition ? "partition" : "simplex";
+      if (self)
+        {
+          // The target side is the contact side itself.
+          Json &sc = c["self contact"];
+          sc["exclusion radius"] = exclusion_radius_;
+          unsigned long long skipped = 0;
+          for (const auto &faces : skip_points)
+            skipped += faces.size();
+          const auto comm = dof_handler.get_communicator();
+          sc["skipped faces per evaluation point"] =
+            static_cast<double>(Utilities::MPI::sum(skipped, comm)) /
+            std::max(1u, stats.points);
+        }
+      else
       {
         // Body 2's side, from the reaction of the penalty term on its
         // target nodes (at the last profile written).
