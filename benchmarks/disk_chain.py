@@ -14,6 +14,9 @@ Hertz error of a and p0 over the pairs, and the worst body balance
 
   python3 benchmarks/disk_chain.py --binary build/signorini --out chain
   python3 benchmarks/disk_chain.py --quick ...   (N = 2, 3 on a coarse mesh)
+  python3 benchmarks/disk_chain.py --modes chain,all,every --bodies 2,4,8
+      (the search's cost: the neighbours' pairs, one search over every
+      body, or every ordered pair as a part of its own)
 """
 import argparse
 import json
@@ -24,8 +27,11 @@ import sys
 import time
 
 
-def scene(n, global_refinements, local_refinements):
-    """The parameter text of a chain of n bodies."""
+def scene(n, global_refinements, local_refinements, mode="chain"):
+    """The parameter text of a chain of n bodies; mode: 'chain' lists the
+    n - 1 pairs of neighbours, 'all' lets every body touch every other
+    ('Two-body pairs = all' over the n arcs: one search), 'every' lists
+    all n (n - 1) ordered pairs as parts of their own (one search each)."""
     lines = ["set Dimension = 2", "set Scene name = disk_chain_%d" % n,
              "subsection Mesh",
              "  set Global refinements = %d" % global_refinements,
@@ -53,9 +59,15 @@ def scene(n, global_refinements, local_refinements):
                   "    set Young's modulus = 200",
                   "    set Poisson's ratio = 0.3", "  end", "end"]
         fixed.append("%d: x" % (offset + 1))
-    pairs = ", ".join("%d:%d" % (10 * (b - 1), 10 * b) for b in range(1, n))
+    arcs = [10 * b for b in range(n)]
+    if mode == "chain":
+        pairs = ", ".join("%d:%d" % (10 * (b - 1), 10 * b) for b in range(1, n))
+    elif mode == "all":
+        pairs = "all\n    set Contact boundaries = " + ", ".join(map(str, arcs))
+    else:
+        pairs = ", ".join("%d:%d" % (c, t) for c in arcs for t in arcs if c != t)
     hertz = []
-    for k in range(1, n + 1):
+    for k in range(1, n + 1 if mode == "chain" else 0):
         if k > 8:  # 'Pair K' subsections exist for K <= 8
             break
         second = "1" if k < n else "0"
@@ -96,20 +108,26 @@ def main():
     parser.add_argument("--out", default="disk_chain")
     parser.add_argument("--bodies", default="2,4,8,16")
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--modes", default="chain",
+                        help="comma-separated: chain (the neighbours' pairs), "
+                        "all (Two-body pairs = all: one search), every (all "
+                        "ordered pairs as parts: one search each)")
     args = parser.parse_args()
     binary = os.path.join(here, args.binary)
     out = os.path.join(here, args.out)
     os.makedirs(out, exist_ok=True)
     bodies = [2, 3] if args.quick else [int(b) for b in args.bodies.split(",")]
     refinements = (2, 3) if args.quick else (3, 5)
-    print("| bodies | pairs | DoFs | Newton its | evaluated pairs (last) "
-          "| contact [s] | run [s] | worst a, p0 error | worst balance |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for n in bodies:
-        folder = os.path.join(out, "chain_%d" % n)
-        prm = os.path.join(out, "chain_%d.prm" % n)
+    modes = args.modes.split(",")
+    print("| mode | bodies | parts | DoFs | Newton its | evaluated pairs (last) "
+          "| contact [s] | contact per Newton it [ms] | run [s] "
+          "| worst a, p0 error | worst balance |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for n, mode in [(n, m) for n in bodies for m in modes]:
+        folder = os.path.join(out, "%s_%d" % (mode, n))
+        prm = os.path.join(out, "%s_%d.prm" % (mode, n))
         with open(prm, "w") as f:
-            f.write(scene(n, *refinements).replace(
+            f.write(scene(n, *refinements, mode).replace(
                 "set Scene name", "set Output directory = %s\nset Scene name"
                 % folder, 1))
         start = time.time()
@@ -124,6 +142,8 @@ def main():
         errors = [summary["quantities"][k]["relative error"]
                   for k in summary["quantities"]
                   if k.endswith("_hertz_a") or k.endswith("_hertz_p0")]
+        error = "%.2f%%" % (100 * max(errors)) if errors else "n/a"
+        parts = len(summary["contact"].get("pairs", []))
         balance = max(abs(q["body%d_contact_force_y" % b]
                           - (0.2 if b == 1 else 0.)) / 0.2
                       for b in range(1, n + 1))
@@ -131,10 +151,11 @@ def main():
             rows = [line.strip().split(",") for line in f]
         pairs = rows[-1][rows[0].index("evaluated_pairs")]
         wall = summary["wall time [s]"]
-        print("| %d | %d | %d | %d | %s | %.2f | %.1f | %.2f%% | %.1e |" % (
-            n, n, summary["mesh"]["dofs"], summary["newton iterations"],
-            pairs, wall.get("contact", float("nan")), seconds,
-            100 * max(errors), balance))
+        contact = wall.get("contact", float("nan"))
+        its = summary["newton iterations"]
+        print("| %s | %d | %d | %d | %d | %s | %.2f | %.2f | %.1f | %s | %.1e |" % (
+            mode, n, parts, summary["mesh"]["dofs"], its, pairs, contact,
+            1e3 * contact / max(its, 1), seconds, error, balance))
 
 
 if __name__ == "__main__":

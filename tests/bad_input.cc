@@ -529,6 +529,18 @@ main()
   run_case("self_contact_twice", pairs("    set Self-contact boundary ids = 10, 10\n"),
            out);
   run_case("pairs_same_boundary", pairs("    set Two-body pairs = 10:10\n"), out);
+  // All bodies: 'all' without its boundaries, boundaries without 'all',
+  // one boundary only, a Hertz reference for the all-bodies part.
+  run_case("pairs_all_without_boundaries", pairs("    set Two-body pairs = all\n"), out);
+  run_case("pairs_boundaries_without_all", pairs("    set Contact boundaries = 0, 10\n"),
+           out);
+  run_case("pairs_all_one_boundary",
+           pairs("    set Two-body pairs = all\n    set Contact boundaries = 0\n"), out);
+  run_case("pairs_all_hertz",
+           pairs("    set Two-body pairs = all\n    set Contact boundaries = 0, 10, 20\n"
+                 "    subsection Pair 3\n      subsection Hertz reference\n"
+                 "        set Line load = 0\n      end\n    end\n"),
+           out);
   // Fixed points: no vertex there; a point of one coordinate.
   run_case("fixed_point_no_vertex",
            stack("subsection Boundary conditions\n  set Fixed points = 0.123, 4.5: x\nend\n"),

@@ -34,7 +34,21 @@ namespace Signorini
                         "every pair its form and settings (not its target "
                         "id). A boundary may be the target of one pair and "
                         "the contact boundary of another. Pair K is the "
-                        "K-th entry.");
+                        "K-th entry. 'all': every body against every other "
+                        "through the surfaces 'Contact boundaries', as one "
+                        "pair (pair 1) with one search over all of them "
+                        "(a point meets the faces near it, of any other "
+                        "body: the search costs what the contact zones "
+                        "cost, not what the pairs of bodies do); its "
+                        "output is per body (bodyB_contact_force_*).");
+      prm.declare_entry("Contact boundaries",
+                        "",
+                        Patterns::Anything(),
+                        "With 'Two-body pairs = all': the boundary ids, "
+                        "separated by commas, that may touch another "
+                        "body (on two bodies at least; a body may have "
+                        "several). Not the loaded, symmetry or clamped "
+                        "boundaries.");
       prm.declare_entry("Self-contact boundary ids",
                         "",
                         Patterns::Anything(),
@@ -112,7 +126,37 @@ namespace Signorini
       pairs.clear();
       foundation_ids.clear();
       const std::string pairs_key = "Two-body pairs";
-      for (const auto &entry : Utilities::split_string_list(prm.get(pairs_key)))
+      contact_boundaries.clear();
+      const std::string boundaries_key = "Contact boundaries";
+      for (const auto &entry : Utilities::split_string_list(prm.get(boundaries_key)))
+        {
+          const auto id = boundary_id(entry, boundaries_key);
+          if (std::find(contact_boundaries.begin(), contact_boundaries.end(), id) !=
+              contact_boundaries.end())
+            throw InputError("Contact > Pairs > " + boundaries_key,
+                             "boundary id " + entry + " is given twice");
+          contact_boundaries.push_back(id);
+        }
+      const bool all = Utilities::trim(prm.get(pairs_key)) == "all";
+      if (all != !contact_boundaries.empty())
+        throw InputError("Contact > Pairs > " + boundaries_key,
+                         all ? "'Two-body pairs = all' needs the surfaces that "
+                               "may touch (at least two boundary ids)" :
+                               "'Contact boundaries' goes with 'Two-body pairs = "
+                               "all' (a list of pairs names its boundaries)");
+      if (all)
+        {
+          if (contact_boundaries.size() < 2)
+            throw InputError("Contact > Pairs > " + boundaries_key,
+                             "'Two-body pairs = all' needs at least two boundary "
+                             "ids, on two bodies");
+          Pair pair;
+          pair.contact = pair.target = contact_boundaries.front();
+          pair.all                   = true;
+          pairs.push_back(pair);
+        }
+      for (const auto &entry :
+           all ? std::vector<std::string>() : Utilities::split_string_list(prm.get(pairs_key)))
         {
           const auto ids = Utilities::split_string_list(entry, ':');
           if (ids.size() != 2)
@@ -209,6 +253,9 @@ namespace Signorini
                                                                  dof_handler, mapping);
               if (prm.pairs[k].self)
                 model->set_self_contact(prm.self_exclusion_radius);
+              if (prm.pairs[k].all)
+                model->set_all_bodies(std::set<types::boundary_id>(
+                  prm.contact_boundaries.begin(), prm.contact_boundaries.end()));
               // The target nodes' record holds the whole reaction: the
               // pair's action and reaction sum to zero.
               model->set_lumped_reaction(true);
@@ -249,6 +296,8 @@ namespace Signorini
           ids.insert(p.contact);
           if (p.two_body)
             ids.insert(p.target);
+          if (p.two_body && p.two_body->all_bodies_mode())
+            ids.insert(prm.contact_boundaries.begin(), prm.contact_boundaries.end());
         }
       const double first = parts.front().model->initial_penalty(1.);
       for (Part &p : parts)
@@ -303,9 +352,20 @@ namespace Signorini
       std::ostringstream s;
       s << prm.pairs.size() << " two-body pair(s)";
       for (unsigned int k = 0; k < prm.pairs.size(); ++k)
-        s << (k == 0 ? " (" : ", ") << static_cast<unsigned int>(prm.pairs[k].contact) << ":"
-          << static_cast<unsigned int>(prm.pairs[k].target) << (prm.pairs[k].self ? " self" : "")
-          << (k + 1 == prm.pairs.size() ? ")" : "");
+        {
+          s << (k == 0 ? " (" : ", ");
+          if (prm.pairs[k].all)
+            {
+              s << "all bodies:";
+              for (const auto id : prm.contact_boundaries)
+                s << " " << static_cast<unsigned int>(id);
+            }
+          else
+            s << static_cast<unsigned int>(prm.pairs[k].contact) << ":"
+              << static_cast<unsigned int>(prm.pairs[k].target)
+              << (prm.pairs[k].self ? " self" : "");
+          s << (k + 1 == prm.pairs.size() ? ")" : "");
+        }
       if (!prm.pairs.empty())
         s << ", " << (prm.two_body.integral ? "integral" : "nodal") << " form";
       for (unsigned int k = 0; k < prm.foundation_ids.size(); ++k)
@@ -820,7 +880,8 @@ namespace Signorini
           p.model->write_summary(part);
           if (p.two_body) // its own description says "body 2"
             part["target"] =
-              std::string(p.two_body->self_contact() ? "its own body (self-contact) through boundary " :
+              std::string(p.two_body->all_bodies_mode() ? "every other body, from boundary " :
+                          p.two_body->self_contact() ? "its own body (self-contact) through boundary " :
                                                        "the body of boundary ") +
               std::to_string(static_cast<unsigned int>(p.target)) + ", " +
               (prm.two_body.integral ? "integral" : "nodal") + " form";
@@ -859,8 +920,12 @@ namespace Signorini
       entry.boundary_ids = [](const ModelParameters &parameters) {
         const auto                  &p = parsed<PairsParameters>(parameters);
         std::vector<NamedBoundaryId> ids;
+        for (const auto id : p.contact_boundaries)
+          ids.push_back({"Pairs > Contact boundaries", id});
         for (const auto &pair : p.pairs)
-          if (pair.self)
+          if (pair.all)
+            continue;
+          else if (pair.self)
             ids.push_back({"Pairs > Self-contact boundary ids", pair.contact});
           else
             {

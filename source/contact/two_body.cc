@@ -302,6 +302,8 @@ namespace Signorini
       , mapping(mapping)
       , boundary(dof_handler, mapping)
       , target(dof_handler, mapping)
+      , contact_ids({contact_boundary})
+      , target_ids({parameters.target_boundary})
     {}
 
     template <int dim>
@@ -311,12 +313,10 @@ namespace Signorini
     {
       const MPI_Comm comm = dof_handler.get_communicator();
       relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
-      boundary.setup({contact_boundary}, hanging_constraints);
-      // Self-contact: the contact nodes carry every force (no second
-      // record of the same nodes).
-      target.setup(self ? std::set<types::boundary_id>() :
-                          std::set<types::boundary_id>{prm.target_boundary},
-                   hanging_constraints);
+      boundary.setup(contact_ids, hanging_constraints);
+      // Self-contact and all bodies: the contact nodes carry every force
+      // (no second record of the same nodes).
+      target.setup(self ? std::set<types::boundary_id>() : target_ids, hanging_constraints);
       this->nodal_forces.assign((boundary.nodes().size() + target.nodes().size()) * dim,
                                 0.);
 
@@ -325,7 +325,7 @@ namespace Signorini
       mark_face_ends();
       check_boundaries();
       measure_faces();
-      if (self)
+      if (self && !all_bodies)
         {
           // Automatic radius: three of the largest faces, so that a point
           // skips the faces of its own neighbourhood.
@@ -353,9 +353,32 @@ namespace Signorini
       // Body 1's nodes as evaluation points (always: they carry the
       // output), and the Gauss points of the integral form.
       node_points.clear();
+      // A node's body: the material of a cell whose contact face holds it
+      // (bodies share no vertices).
+      std::map<types::global_dof_index, types::material_id> body_of_dof;
+      std::vector<types::global_dof_index>                   face_dofs;
+      if (all_bodies)
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  contact_ids.count(cell->face(f)->boundary_id()) > 0)
+                {
+                  face_dofs.resize(dof_handler.get_fe().n_dofs_per_face(f));
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  for (const auto dof : face_dofs)
+                    body_of_dof[dof] = cell->material_id();
+                }
       for (const auto &n : boundary.nodes())
         {
           Point1 p;
+          if (all_bodies)
+            {
+              const auto it = body_of_dof.find(n.dofs[0]);
+              AssertThrow(it != body_of_dof.end(),
+                          ExcMessage("a contact node lies on no contact face this rank sees"));
+              p.body = it->second;
+            }
           for (unsigned int c = 0; c < dim; ++c)
             {
               p.dofs.push_back(n.dofs[c]);
@@ -381,7 +404,7 @@ namespace Signorini
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == contact_boundary)
+                contact_ids.count(cell->face(f)->boundary_id()) > 0)
               {
                 fe_face.reinit(cell, f);
                 cell->get_dof_indices(dofs);
@@ -398,6 +421,7 @@ namespace Signorini
                         }
                     p.X      = fe_face.quadrature_point(q);
                     p.weight = fe_face.JxW(q);
+                    p.body   = cell->material_id();
                     points.push_back(p);
                   }
               }
@@ -413,7 +437,7 @@ namespace Signorini
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == prm.target_boundary)
+                target_ids.count(cell->face(f)->boundary_id()) > 0)
               {
                 // Face vertices in cyclic order, then the opposite face's
                 // vertices in the same order (vertex i of face f lies
@@ -421,7 +445,8 @@ namespace Signorini
                 const unsigned int fo = GeometryInfo<dim>::opposite_face[f];
                 const std::array<unsigned int, 4> cyclic = {{0, 1, 3, 2}};
                 Face2 face;
-                face.h = cell->face(f)->diameter();
+                face.h    = cell->face(f)->diameter();
+                face.body = cell->material_id();
                 for (unsigned int side = 0; side < 2; ++side)
                   for (unsigned int v = 0; v < n_face_vertices; ++v)
                     {
@@ -543,9 +568,9 @@ namespace Signorini
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                if (cell->face(f)->boundary_id() == contact_boundary)
+                if (contact_ids.count(cell->face(f)->boundary_id()) > 0)
                   body1.insert(cell->material_id());
-                if (cell->face(f)->boundary_id() == prm.target_boundary)
+                if (target_ids.count(cell->face(f)->boundary_id()) > 0)
                   body2.insert(cell->material_id());
               }
       std::vector<unsigned int> ids1(body1.begin(), body1.end()),
@@ -563,6 +588,14 @@ namespace Signorini
         throw InputError("Contact > Two bodies > Target boundary id",
                          "boundary " + std::to_string(prm.target_boundary) +
                            " does not exist in the mesh");
+      if (all_bodies)
+        {
+          if (all1.size() < 2)
+            throw InputError("Contact > Pairs > Contact boundaries",
+                             "'Two-body pairs = all' needs contact boundaries on "
+                             "at least two bodies; these lie on one");
+          return;
+        }
       if (self)
         {
           if (contact_boundary != prm.target_boundary)

@@ -175,7 +175,14 @@ namespace Signorini
       c["stretch"]           = prm.stretch;
       c["indicator shape"] =
         prm.shape == IndicatorShape::partition ? "partition" : "simplex";
-      if (self)
+      if (all_bodies)
+        {
+          Json ids = Json::array();
+          for (const auto id : contact_ids)
+            ids.push_back(static_cast<unsigned int>(id));
+          c["all bodies"] = ids; // every body's boundaries against the others'
+        }
+      else if (self)
         {
           // The target side is the contact side itself.
           Json &sc = c["self contact"];

@@ -522,7 +522,7 @@ namespace Signorini
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == prm.target_boundary)
+                target_ids.count(cell->face(f)->boundary_id()) > 0)
               local_ids.push_back(cell->material_id());
       std::set<unsigned int> body2;
       for (const auto &ids : Utilities::MPI::all_gather(comm, local_ids))

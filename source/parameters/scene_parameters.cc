@@ -501,6 +501,11 @@ namespace Signorini
             continue;
           const std::string section =
             "Contact > Pairs > Pair " + std::to_string(k + 1) + " > Hertz reference > ";
+          if (!pairs.is_foundation(k) && pairs.pairs[k].all)
+            throw InputError(section + (h.point_contact() ? "Point load" : "Line load"),
+                             "pair " + std::to_string(k + 1) +
+                               " is every body against every other ('Two-body "
+                               "pairs = all'): no one Hertz reference applies");
           if (h.point_contact() && dim != 3)
             throw InputError(section + "Point load",
                              "point contact (a sphere) needs Dimension = 3; in 2D "

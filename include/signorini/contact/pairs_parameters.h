@@ -40,9 +40,14 @@ namespace Signorini
         types::boundary_id target  = 0;
         /// Self-contact: contact == target ('Self-contact boundary ids').
         bool self = false;
+        /// Every body against every other ('Two-body pairs = all', over
+        /// 'Contact boundaries'; contact and target: the first of them).
+        bool all = false;
       };
       /// 'Two-body pairs'.
       std::vector<Pair> pairs;
+      /// 'Contact boundaries' (with 'Two-body pairs = all').
+      std::vector<types::boundary_id> contact_boundaries;
       /// 'Self-contact exclusion radius' (0: automatic).
       double self_exclusion_radius = 0.;
       /// 'Foundation boundary ids'.

@@ -382,7 +382,31 @@ namespace Signorini
       bool
       self_contact() const
       {
-        return self;
+        return self && !all_bodies;
+      }
+
+      /**
+       * Every body against every other ('Two-body pairs = all'): the
+       * boundaries @p ids are at once the contact boundary and the target
+       * surface, and a point of one body is evaluated against the faces of
+       * every other body (one R-tree over all of them: the search costs
+       * what the points and the faces near them cost, not what the pairs
+       * of bodies do), never against its own body's. The force record
+       * holds the nodes' totals, as with self-contact. Call before setup().
+       */
+      void
+      set_all_bodies(const std::set<types::boundary_id> &ids)
+      {
+        self        = true;
+        all_bodies  = true;
+        contact_ids = ids;
+        target_ids  = ids;
+      }
+
+      bool
+      all_bodies_mode() const
+      {
+        return all_bodies;
       }
 
       /// The exclusion radius in use (after setup(): an automatic radius
@@ -467,6 +491,7 @@ namespace Signorini
         std::vector<double>                  shape;
         Point<dim>                           X;
         double                               weight;
+        types::material_id                   body = 0; // of its cell
       };
 
       /// A face of body 2's contact surface: the DoFs of its vertices and
@@ -480,6 +505,7 @@ namespace Signorini
         std::array<double, n_face_vertices> end_stretch; // -1: common
         std::array<bool, n_face_vertices>   free_end{};
         std::array<double, n_face_vertices> ramp{};      // partition shape
+        types::material_id                  body = 0;    // of its cell
 
         template <class Archive>
         void
@@ -487,7 +513,7 @@ namespace Signorini
         {
           for (unsigned int k = 0; k < n_target_dofs; ++k)
             ar &dofs[k] & X[k];
-          ar &h;
+          ar &h &body;
         }
       };
 
@@ -577,6 +603,8 @@ namespace Signorini
       {
         if (!self)
           return false;
+        if (all_bodies)
+          return list[k].body == faces2[face].body;
         const auto &skipped = (&list == &points ? skip_points : skip_nodes)[k];
         return std::binary_search(skipped.begin(), skipped.end(), face);
       }
@@ -617,6 +645,10 @@ namespace Signorini
       bool                                            convexified = false;
       bool                                            lumped_reaction = false;
       bool                                            self = false;
+      bool                                            all_bodies = false;
+      /// The contact boundaries and the target boundaries: one each, or
+      /// the same set (all bodies).
+      std::set<types::boundary_id>                    contact_ids, target_ids;
       double                                          exclusion_radius_ = 0.;
       std::vector<std::vector<unsigned int>>          skip_points, skip_nodes;
       mutable AffineConstraints<double>               merged;
