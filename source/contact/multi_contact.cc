@@ -569,6 +569,17 @@ namespace Signorini
     }
 
     template <int dim>
+    std::optional<double>
+    MultiContact<dim>::search_seconds() const
+    {
+      std::optional<double> total;
+      for (const Part &p : parts)
+        if (const auto seconds = p.model->search_seconds())
+          total = total.value_or(0.) + *seconds;
+      return total;
+    }
+
+    template <int dim>
     std::vector<types::global_dof_index>
     MultiContact<dim>::force_dofs() const
     {

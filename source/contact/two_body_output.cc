@@ -215,6 +215,7 @@ namespace Signorini
       b["evaluated pairs, largest"]         = stats.max_pairs;
       b["pairs in the sparsity pattern"]    = stats.pattern_pairs;
       b["sparsity pattern builds"]          = stats.pattern_builds;
+      b["search wall time [s]"]             = stats.search_seconds;
     }
 
     // Instantiations of the member functions defined in this file.

@@ -12,6 +12,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -27,10 +28,31 @@ namespace Signorini
   {
     namespace bgi = boost::geometry::index;
 
+    namespace
+    {
+      /// Adds the wall time of its scope to @p total (the search's share of
+      /// the contact terms, for summary.json).
+      struct SearchClock
+      {
+        explicit SearchClock(double &total)
+          : total(total)
+          , start(std::chrono::steady_clock::now())
+        {}
+        ~SearchClock()
+        {
+          total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                     .count();
+        }
+        double                                            &total;
+        const std::chrono::steady_clock::time_point start;
+      };
+    } // namespace
+
     template <int dim>
     std::vector<IndicatorFace<dim>>
     TwoBodyContact<dim>::current_faces(const VectorType &u) const
     {
+      const SearchClock   clock(stats.search_seconds);
       const MPI_Comm      comm = dof_handler.get_communicator();
       std::vector<double> local;
       local.reserve(n_owned_faces * n_target_dofs);
@@ -67,6 +89,7 @@ namespace Signorini
     TwoBodyContact<dim>::face_tree(const std::vector<IndicatorFace<dim>> &faces,
                                    const double                           margin) const
     {
+      const SearchClock clock(stats.search_seconds);
       std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
       boxes.reserve(faces.size());
       for (unsigned int i = 0; i < faces.size(); ++i)
@@ -105,7 +128,10 @@ namespace Signorini
         {
           const Point<dim> x = position(pts[k], u);
           hits.clear();
-          tree.query(bgi::intersects(x), std::back_inserter(hits));
+          {
+            const SearchClock clock(stats.search_seconds);
+            tree.query(bgi::intersects(x), std::back_inserter(hits));
+          }
           for (const auto &hit : hits)
             if (!skips(pts, k, hit.second) &&
                 (!positive_only ||
@@ -186,7 +212,10 @@ namespace Signorini
         {
           const Point<dim> x = position(node_points[k], u);
           hits.clear();
-          tree.query(bgi::intersects(x), std::back_inserter(hits));
+          {
+            const SearchClock clock(stats.search_seconds);
+            tree.query(bgi::intersects(x), std::back_inserter(hits));
+          }
           double best = std::numeric_limits<double>::infinity();
           for (const auto &hit : hits)
             {
@@ -323,7 +352,10 @@ namespace Signorini
           {
             const Point<dim> x = position((*list)[k], u);
             hits.clear();
-            tree.query(bgi::intersects(x), std::back_inserter(hits));
+            {
+              const SearchClock clock(stats.search_seconds);
+              tree.query(bgi::intersects(x), std::back_inserter(hits));
+            }
             if (self)
               hits.erase(std::remove_if(hits.begin(), hits.end(),
                                         [&](const auto &hit) {
@@ -425,7 +457,10 @@ namespace Signorini
       for (unsigned int k = 0; k < x.size(); ++k)
         {
           hits.clear();
-          tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
+          {
+            const SearchClock clock(stats.search_seconds);
+            tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
+          }
           // A point penetrates only inside one of the target's cells (its
           // depth is still the smallest below any face that sees it): the
           // layer of a face reaches past the face's ends (its ramp or its

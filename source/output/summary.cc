@@ -356,6 +356,10 @@ namespace Signorini
     Json timing     = Json::object();
     for (const auto &t : report.timing)
       timing[t.first] = t.second;
+    // The search's share of the contact terms (this process's).
+    if (contact)
+      if (const auto seconds = contact->search_seconds())
+        timing["contact search"] = *seconds;
     j["wall time [s]"] = timing;
 
     // Each file is renamed into place once complete: an interrupted write

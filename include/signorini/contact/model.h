@@ -183,6 +183,14 @@ namespace Signorini
         return std::nullopt;
       }
 
+      /// Wall time of the geometric search so far in this process (part
+      /// of the contact terms' time), for a model that searches [s].
+      virtual std::optional<double>
+      search_seconds() const
+      {
+        return std::nullopt;
+      }
+
       /**
        * Active set, penetration, total force, moment, area and largest
        * pressure of the ghosted state @p u, from its @p samples

@@ -156,6 +156,10 @@ namespace Signorini
       std::optional<unsigned long long>
       evaluated_pairs() const override;
 
+      /// Summed over the two-body parts.
+      std::optional<double>
+      search_seconds() const override;
+
       /// The common entries ("contacts": the description), then "pairs":
       /// one block per part (its own summary block with its name,
       /// boundaries and penalty scale).

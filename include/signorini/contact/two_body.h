@@ -94,6 +94,9 @@ namespace Signorini
         unsigned long long max_pairs          = 0; // evaluated, largest
         unsigned long long pattern_pairs      = 0; // in the sparsity pattern
         unsigned int       pattern_builds     = 0;
+        /// Wall time of the search on this rank (gathering the current
+        /// faces, building their R-trees, querying them) [s].
+        double             search_seconds     = 0.;
       };
 
       TwoBodyContact(const TwoBodyParameters &parameters,
@@ -166,6 +169,12 @@ namespace Signorini
       evaluated_pairs() const override
       {
         return stats.last_pairs;
+      }
+
+      std::optional<double>
+      search_seconds() const override
+      {
+        return stats.search_seconds;
       }
 
       /// Form, indicator shape and broad-phase statistics.

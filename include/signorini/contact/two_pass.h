@@ -188,6 +188,12 @@ namespace Signorini
         return *first.evaluated_pairs() + *second.evaluated_pairs();
       }
 
+      std::optional<double>
+      search_seconds() const override
+      {
+        return *first.search_seconds() + *second.search_seconds();
+      }
+
       /// The first pass's block, "passes": 2 and the second pass's broad
       /// phase.
       void
