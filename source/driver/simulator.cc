@@ -414,7 +414,13 @@ namespace Signorini
       summary(); // a run killed from outside keeps its finished cycles
     };
     if (!report.cycles.empty())
-      estimate_errors(); // a restart: whether its cycles met the target
+      {
+        // A restart: whether its cycles met the target, from the last
+        // cycle's quantities (a restart inside a cycle's load path, with
+        // friction, holds those of a step of that path).
+        report.quantities = report.cycles.back().quantities;
+        estimate_errors();
+      }
     if (report.cycles.empty())
       {
         record_cycle(0, report.iterations, 0, elapsed(run_timer));
