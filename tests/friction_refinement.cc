@@ -18,6 +18,9 @@
 //   slip points and contact force (1e-9; measured: equal to the last
 //   bit); 2 adaptive cycles converge in gross slip, |Rx| = mu |Ry| within
 //   1e-3 on every cycle;
+// - two bodies (prm/hertz_block.prm with mu = 0.3, Local refinements 3,
+//   newton-penalty): the coarser-mesh estimate's cycle 1 is the plain run
+//   (1e-9), one adaptive cycle converges;
 // - restarted from the checkpoint of the refined mesh at rest and from one
 //   inside its path, the adaptive run ends with the same numbers as
 //   without a stop (1e-10).
@@ -184,6 +187,43 @@ namespace
         << "1e-3 on every cycle: " << verdict(gross) << "\n";
   }
 
+  /// Friction between two bodies (prm/hertz_block.prm with mu = 0.3 on a
+  /// coarse mesh, newton-penalty): the coarser-mesh estimate's cycle 1 is
+  /// the plain run, and an adaptive cycle converges.
+  void
+  two_bodies(std::ostream &out)
+  {
+    const std::string edits = "subsection Mesh\n  set Local refinements = 3\nend\n"
+                              "subsection Contact\n  subsection Friction\n"
+                              "    set Coefficient = 0.3\n  end\nend\n";
+    // Exit code 4 on this coarse mesh: a and p0 outside the scene's
+    // Hertz tolerances; the status says whether the run converged.
+    const auto converged = [](const std::string &folder) {
+      return RunOutput::read_text(folder + "/summary.json").find("\"status\": \"converged\"") !=
+             std::string::npos;
+    };
+    RunOutput::run_scene("bodies", "hertz_block.prm", edits);
+    RunOutput::run_scene("bodies_coarser", "hertz_block.prm",
+                         edits + "subsection Mesh refinement\n"
+                                 "  set Estimate from a coarser mesh = true\nend\n");
+    RunOutput::run_scene("bodies_cycle", "hertz_block.prm",
+                         edits + "subsection Mesh refinement\n"
+                                 "  set Number of cycles = 1\nend\n");
+    bool same = converged("bodies") && converged("bodies_coarser");
+    for (const std::string q : {"friction_force_x", "dissipated_energy", "stick_points",
+                                "slip_points", "contact_force_y", "hertz_a"})
+      {
+        const double x = summary_quantity("bodies/summary.json", q);
+        const double y = summary_quantity("bodies_coarser/summary.json", q);
+        same = same && std::abs(x - y) <= 1e-9 * std::max(1e-300, std::abs(x));
+      }
+    out << "two bodies: the coarser-mesh estimate's cycle 1 is the plain run: "
+        << verdict(same) << ", one adaptive cycle converges: "
+        << verdict(converged("bodies_cycle") &&
+                   read_csv("bodies_cycle/refinement_cycles.csv").size() == 2)
+        << "\n";
+  }
+
   std::string
   checkpoint(const std::string &folder, const unsigned int n)
   {
@@ -235,5 +275,6 @@ main()
   cattaneo_mindlin(out);
   for (const std::string method : {"interior-point", "newton-penalty"})
     sliding_block(out, method);
+  two_bodies(out);
   restart(out);
 }
