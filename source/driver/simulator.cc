@@ -484,6 +484,8 @@ namespace Signorini
               << report.n_dofs << " DoFs";
         if (problem->contact)
           pcout << ", " << report.contact_nodes << " contact nodes";
+        if (problem->friction)
+          pcout << "; with friction the load path again from rest";
         pcout << std::endl;
         unsigned int iterations = 0;
         if (problem->friction)
