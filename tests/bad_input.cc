@@ -375,13 +375,6 @@ main()
                    "  subsection Friction\n    set Coefficient = -0.3\n  end\n"
                    "  subsection Foundation"),
            out);
-  run_case("friction_with_refinement_cycles",
-           replace(with_contact("3", "set Shape = plane", "newton-penalty"),
-                   "  subsection Foundation",
-                   "  subsection Friction\n    set Coefficient = 0.3\n  end\n"
-                   "  subsection Foundation") +
-             "subsection Mesh refinement\n  set Number of cycles = 2\nend\n",
-           out);
   run_case("friction_mindlin_without_hertz",
            replace(with_contact("3", "set Shape = plane", "newton-penalty"),
                    "  subsection Foundation",

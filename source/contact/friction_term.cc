@@ -113,6 +113,21 @@ namespace Signorini
     }
 
     template <int dim>
+    void
+    NodeFriction<dim>::reset()
+    {
+      reference.clear();
+      lambda.clear();
+      basis.clear();
+      laws.clear();
+      history.clear();
+      history_times.clear();
+      mixing.clear();
+      last_change = 0.;
+      started     = false;
+    }
+
+    template <int dim>
     std::vector<Tensor<1, dim>>
     NodeFriction<dim>::increments(const VectorType &u, std::vector<bool> &has) const
     {

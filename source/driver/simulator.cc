@@ -160,6 +160,29 @@ namespace Signorini
     report.contact_nodes = problem->contact ? problem->contact->n_global_nodes() : 0;
   }
 
+  namespace
+  {
+    /**
+     * The converged steps of the load path that a step to load time @p t
+     * continues: those after the last fall of the load time. A refinement
+     * cycle with friction runs the path again from rest, so that the
+     * friction's records summed or followed along the path (the
+     * dissipated energy, Mindlin's load path) start again with it; a
+     * step whose time is below the last step's starts a path of its own.
+     */
+    std::vector<Report::Step>
+    path_steps(const std::vector<Report::Step> &steps, const double t)
+    {
+      if (!steps.empty() && t < steps.back().time)
+        return {};
+      std::size_t first = steps.size();
+      while (first > 0 && (first == steps.size() ||
+                           steps[first - 1].time <= steps[first].time))
+        --first;
+      return std::vector<Report::Step>(steps.begin() + first, steps.end());
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulator<dim>::complete_step(const double                       t,
@@ -196,7 +219,8 @@ namespace Signorini
              contact_quantities(*problem->contact, parameters.contact.hertz, u,
                                 record,
                                 report.output_directory + "/contact_profile.csv",
-                                problem->friction.get(), report.steps))
+                                problem->friction.get(),
+                                path_steps(report.steps, t)))
           report.quantities.push_back(q);
       solver->add_quantities(report.quantities);
     }
@@ -214,7 +238,9 @@ namespace Signorini
 
   template <int dim>
   void
-  Simulator<dim>::load_path(const Timer &run_timer)
+  Simulator<dim>::load_path(const Timer       &run_timer,
+                            const std::string &series,
+                            const unsigned int cycle)
   {
     const double end_time  = parameters.load_stepping.end_time;
     const double full_step = end_time / parameters.load_stepping.n_steps;
@@ -281,7 +307,7 @@ namespace Signorini
         ++step;
         record.cuts_before = cuts;
         cuts               = 0;
-        complete_step(time, step, stats, record, "solution");
+        complete_step(time, step, stats, record, series);
         // Grow back towards the requested step after an easy step, or
         // after two steps in a row at the cut size: a cut is for a hard
         // stretch of the path, not for the rest of it (otherwise one cut
@@ -310,7 +336,7 @@ namespace Signorini
               << std::defaultfloat << std::setprecision(6) << std::endl;
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           write_progress(report.output_directory, "running", time, end_time,
-                         step, 0, spent, left);
+                         step, cycle, spent, left);
       }
   }
 
@@ -388,7 +414,13 @@ namespace Signorini
       summary(); // a run killed from outside keeps its finished cycles
     };
     if (!report.cycles.empty())
-      estimate_errors(); // a restart: whether its cycles met the target
+      {
+        // A restart: whether its cycles met the target, from the last
+        // cycle's quantities (a restart inside a cycle's load path, with
+        // friction, holds those of a step of that path).
+        report.quantities = report.cycles.back().quantities;
+        estimate_errors();
+      }
     if (report.cycles.empty())
       {
         record_cycle(0, report.iterations, 0, elapsed(run_timer));
@@ -431,6 +463,11 @@ namespace Signorini
                                               parameters.refinement);
             scene->refine_and_transfer(problem->contact.get(), end_time);
             setup_dofs();
+            // With friction the cycle runs the load path from rest: the
+            // state a checkpoint of the new mesh keeps (the friction
+            // history of the old mesh's nodes has no place on it).
+            if (problem->friction)
+              start_path();
             if (back_to_scene_mesh)
               refined_back = true;
             else
@@ -447,26 +484,50 @@ namespace Signorini
               << report.n_dofs << " DoFs";
         if (problem->contact)
           pcout << ", " << report.contact_nodes << " contact nodes";
+        if (problem->friction)
+          pcout << "; with friction the load path again from rest";
         pcout << std::endl;
-        StepStatistics              stats;
-        Report::Step                record{};
-        if (!solver->solve_step(end_time, stats, record))
+        unsigned int iterations = 0;
+        if (problem->friction)
           {
-            // The previous mesh's solution is the last one on disk.
-            std::ostringstream msg;
-            msg << "refinement cycle " << cycle << " (" << report.n_dofs
-                << " DoFs) failed at t = " << end_time << ": " << stats.reason;
-            throw SolveFailure(msg.str());
+            // The whole path from rest on the new mesh (start_path()
+            // above; a restart in the middle of it continues it).
+            try
+              {
+                load_path(run_timer, "", cycle);
+              }
+            catch (const SolveFailure &e)
+              {
+                throw SolveFailure("refinement cycle " + std::to_string(cycle) + " (" +
+                                   std::to_string(report.n_dofs) +
+                                   " DoFs), its load path from rest: " + e.what());
+              }
+            for (const auto &s : path_steps(report.steps, end_time))
+              iterations += s.iterations;
+          }
+        else
+          {
+            StepStatistics stats;
+            Report::Step   record{};
+            if (!solver->solve_step(end_time, stats, record))
+              {
+                // The previous mesh's solution is the last one on disk.
+                std::ostringstream msg;
+                msg << "refinement cycle " << cycle << " (" << report.n_dofs
+                    << " DoFs) failed at t = " << end_time << ": " << stats.reason;
+                throw SolveFailure(msg.str());
+              }
+            ++step;
+            complete_step(end_time, step, stats, record, "");
+            iterations = stats.iterations;
           }
         mesh_ready = false;
-        ++step;
-        complete_step(end_time, step, stats, record, "");
         {
           TimerOutput::Scope scope(*timer, "output");
           postprocessor->write_output(scene->solution_ghosted, cycle, cycle,
                                       true, "refinement");
         }
-        record_cycle(cycle, stats.iterations, refined_cells,
+        record_cycle(cycle, iterations, refined_cells,
                      Utilities::MPI::max(cycle_timer.wall_time(), comm));
         snapshot();
         checkpoint(run_timer, false);
@@ -475,6 +536,24 @@ namespace Signorini
           write_progress(report.output_directory, "running", time, end_time,
                          step, cycle, spent, 0.);
       }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::start_path()
+  {
+    // As run() starts the first path: at rest, the contact model's force
+    // record zero (its setup() on the new mesh made it so).
+    scene->solution         = 0.;
+    scene->solution_ghosted = scene->solution;
+    time                    = 0.;
+    dt                      = 0.;
+    if (problem->contact)
+      problem->contact->set_contact_forces(
+        std::vector<double>(problem->contact->forces().size(), 0.));
+    if (problem->friction)
+      problem->friction->reset();
+    solver->start_path();
   }
 
   template <int dim>
@@ -912,8 +991,11 @@ namespace Signorini
     report.take_record(saved);
     report.restarted_from.push_back(folder);
     previous_times = saved.timing;
+    // With friction a cycle runs the whole path on its mesh: a checkpoint
+    // in it (on the cycle's new mesh) continues that path.
     if (!report.cycles.empty() &&
-        time < parameters.load_stepping.end_time * (1. - 1e-12))
+        time < parameters.load_stepping.end_time * (1. - 1e-12) &&
+        !(problem->friction && mesh_ready))
       throw InputError("Load stepping > End time",
                        "the checkpoint is in the refinement cycles, after the "
                        "load path to t = " + std::to_string(time) +

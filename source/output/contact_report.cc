@@ -178,6 +178,11 @@ namespace Signorini
       c.has_reference = true;
       c.reference     = c_ref;
       c.tolerance     = parameters.tolerance_stick_radius;
+      // A length of the continuous model: the refinement cycles estimate
+      // its error, relative to Hertz's a (an error in c/a, which stays
+      // meaningful when the stick zone vanishes in gross slip).
+      c.estimable = true;
+      c.scale     = a;
       quantities.push_back(c);
       record.tangential_load_ratio  = ratio;
       record.stick_radius           = radius;

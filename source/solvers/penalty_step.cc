@@ -58,6 +58,13 @@ namespace Signorini
   }
 
   template <int dim>
+  void
+  PenaltyStep<dim>::start_path()
+  {
+    last_mu = mu0;
+  }
+
+  template <int dim>
   bool
   PenaltyStep<dim>::solve(const double                 time,
                           StepStatistics              &stats,

@@ -412,12 +412,6 @@ namespace Signorini
         if (!contact)
           throw InputError(key, "friction needs contact (Contact > Type); the scene "
                                 "declares none: set 0");
-        if (p.refinement.cycles > 0 || p.refinement.coarser_mesh_estimate)
-          throw InputError(key, "friction follows the load path, and refinement "
-                                "cycles (Mesh refinement > Number of cycles, or "
-                                "Estimate from a coarser mesh) re-solve the last load "
-                                "from another mesh's state: not yet with friction "
-                                "(doc/friction.md)");
         if (m == Method::ipopt && !p.contact.node_wise_constraints())
           throw InputError(key, "between two bodies, friction works with Solver > "
                                 "Method = newton-penalty; Ipopt as the penalty stages' "

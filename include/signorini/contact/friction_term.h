@@ -149,6 +149,16 @@ namespace Signorini
       virtual void
       load_state(InputArchive &archive, MeshState &mesh) = 0;
 
+      /**
+       * Forget the load path: the history of step_done(), the lag and the
+       * slip's reference, as in a term just built. A refinement cycle with
+       * friction runs the load path again from rest on its new mesh
+       * (Simulator::refinement_cycles()), whose contact nodes are not the
+       * old mesh's.
+       */
+      virtual void
+      reset() = 0;
+
     protected:
       const FrictionParameters parameters;
     };
@@ -191,6 +201,9 @@ namespace Signorini
       save_state(OutputArchive &archive, MeshState &mesh) const override;
       void
       load_state(InputArchive &archive, MeshState &mesh) override;
+
+      void
+      reset() override;
 
     protected:
       NodeFriction(const FrictionParameters &parameters, const MPI_Comm comm);

@@ -78,14 +78,31 @@ namespace Signorini
                   const std::string                 &series);
 
     /// Solve the load path from the current time; throws SolveFailure
-    /// when a step cannot be cut further.
+    /// when a step cannot be cut further. Each converged step's fields go
+    /// to the output @p series (empty: none); @p cycle is the refinement
+    /// cycle the path belongs to (0: the run's own path).
     void
-    load_path(const Timer &run_timer);
+    load_path(const Timer       &run_timer,
+              const std::string &series = "solution",
+              const unsigned int cycle  = 0);
 
-    /// The final load again on adaptively refined meshes, from the
-    /// current cycle.
+    /**
+     * The final load again on adaptively refined meshes, from the
+     * current cycle. Without friction a cycle solves the final load from
+     * the previous mesh's answer, transferred. Friction depends on the
+     * load path (the stick zone is where the last step's slip stayed
+     * below the slip length, from the state of the step before), so with
+     * friction a cycle runs the whole load path again from rest on its
+     * new mesh (start_path()).
+     */
     void
     refinement_cycles(const Timer &run_timer);
+
+    /// The state at rest on the current mesh, ready for the load path
+    /// from t = 0: zero displacement, no contact forces, a friction term
+    /// and a step solver without history.
+    void
+    start_path();
 
     /// The estimated errors of the report's quantities from the cycles so
     /// far (also into the last cycle's record), and whether they meet the

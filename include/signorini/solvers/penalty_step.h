@@ -31,6 +31,10 @@ namespace Signorini
     void
     setup() override;
 
+    /// The first stage of the next step at the mesh's initial penalty.
+    void
+    start_path() override;
+
     bool
     solve(const double                 time,
           StepStatistics              &stats,

@@ -56,6 +56,17 @@ namespace Signorini
     setup();
 
     /**
+     * A load path starts again from rest (after setup(): a refinement
+     * cycle with friction runs the whole path on its new mesh): forget
+     * what carries from one load step to the next, so that the path is
+     * solved as in a run that starts on this mesh. Nothing by default:
+     * setup() already starts the interior point method and Ipopt cold.
+     */
+    virtual void
+    start_path()
+    {}
+
+    /**
      * Minimise at load time @p time. Returns whether it converged; @p stats
      * and @p record receive the iterations, the final evaluation and the
      * solver's own record (penalty stages, status). On success the contact
