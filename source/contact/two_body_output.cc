@@ -186,14 +186,8 @@ namespace Signorini
         {
           // The target side is the contact side itself.
           Json &sc = c["self contact"];
-          sc["exclusion radius"] = exclusion_radius_;
-          unsigned long long skipped = 0;
-          for (const auto &faces : skip_points)
-            skipped += faces.size();
-          const auto comm = dof_handler.get_communicator();
-          sc["skipped faces per evaluation point"] =
-            static_cast<double>(Utilities::MPI::sum(skipped, comm)) /
-            std::max(1u, stats.points);
+          sc["exclusion radius"]                  = exclusion_radius_;
+          sc["skipped faces per evaluation point"] = skipped_per_point;
         }
       else
       {

@@ -660,6 +660,7 @@ namespace Signorini
       std::set<types::boundary_id>                    contact_ids, target_ids;
       double                                          exclusion_radius_ = 0.;
       std::vector<std::vector<unsigned int>>          skip_points, skip_nodes;
+      double                                          skipped_per_point = 0.;
       mutable AffineConstraints<double>               merged;
       /// Body 2's side at the last profile written: the reaction on its
       /// target nodes and their largest pressure (for summary.json).
