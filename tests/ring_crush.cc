@@ -19,6 +19,7 @@
 // Only verdicts are printed.
 
 #include "run_output.h"
+#include "surface_crossing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,54 +35,15 @@ namespace
   using RunOutput::summary_quantity;
   using RunOutput::verdict;
 
-  struct Node
-  {
-    double X, Y, x, y;
-  };
-
-  std::vector<Node>
+  /// The inner surface's nodes: ordered along the surface by reference
+  /// x, the halves told apart by reference y (above or below the centre).
+  std::vector<SurfaceCrossing::Node>
   inner_nodes(const std::string &folder)
   {
-    std::vector<Node> nodes;
+    std::vector<SurfaceCrossing::Node> nodes;
     for (const auto &row : read_csv(folder + "/contact_profile_pair2.csv"))
       nodes.push_back({row.at("Xx"), row.at("Xy"), row.at("x"), row.at("y")});
     return nodes;
-  }
-
-  /// How far a node of one half of the inner surface lies beyond the
-  /// polyline of the other half (> 0: inside the wall opposite), the
-  /// largest over both halves. Halves: reference y above or below the
-  /// centre; each half's polyline through its current positions, ordered
-  /// by reference angle (it runs from x = 0 outwards and back).
-  double
-  largest_crossing(const std::vector<Node> &nodes, const double cy)
-  {
-    std::vector<Node> upper, lower;
-    for (const auto &n : nodes)
-      (n.Y > cy ? upper : lower).push_back(n);
-    const auto by_x = [](const Node &a, const Node &b) { return a.X < b.X; };
-    std::sort(upper.begin(), upper.end(), by_x);
-    std::sort(lower.begin(), lower.end(), by_x);
-    double worst = -1e300;
-    // The halves face each other near x = 0 (the flattened part): there
-    // each is a graph y(x) of the current x.
-    const auto check = [&worst](const std::vector<Node> &line,
-                                const std::vector<Node> &others,
-                                const double             sign) {
-      for (const auto &n : others)
-        for (std::size_t k = 0; k + 1 < line.size(); ++k)
-          {
-            const Node &a = line[k], &b = line[k + 1];
-            if (!(b.x > a.x) || n.x < a.x || n.x > b.x)
-              continue;
-            const double y = a.y + (b.y - a.y) * (n.x - a.x) / (b.x - a.x);
-            // sign +1: the line is the upper half, n must stay below it.
-            worst = std::max(worst, sign * (n.y - y));
-          }
-    };
-    check(upper, lower, 1.);
-    check(lower, upper, -1.);
-    return worst;
   }
 } // namespace
 
@@ -126,7 +88,7 @@ main()
             << reaction << " plate " << plate << " bottom " << bottom << " ring "
             << ring_y << "\n";
 
-  const double crossing = largest_crossing(inner_nodes("half"), cy);
+  const double crossing = SurfaceCrossing::largest_crossing(inner_nodes("half"), cy);
   out << "no inner node beyond the opposite half by more than 1e-2 h: "
       << verdict(crossing <= 1e-2 * h) << "\n";
   std::cerr << "largest crossing " << crossing << " (h " << h << ")\n";
@@ -139,7 +101,7 @@ main()
     "off", "ring_crush.prm",
     "subsection Contact\n subsection Pairs\n  set Self-contact exclusion radius = 100\n"
     " end\nend\n");
-  const double through = largest_crossing(inner_nodes("off"), cy);
+  const double through = SurfaceCrossing::largest_crossing(inner_nodes("off"), cy);
   out << "without self-contact: exits 0: " << verdict(off == 0)
       << "; the inner surfaces pass through each other by more than 0.1: "
       << verdict(through > 0.1) << "\n";

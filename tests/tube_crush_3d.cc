@@ -18,6 +18,7 @@
 // Only verdicts are printed.
 
 #include "run_output.h"
+#include "surface_crossing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,53 +34,25 @@ namespace
   using RunOutput::summary_quantity;
   using RunOutput::verdict;
 
-  struct Node
-  {
-    double X, Z, x, z;
-  };
-
-  /// The inner surface's nodes, by reference y (rounded to 1e-9).
-  std::map<long long, std::vector<Node>>
+  /// The inner surface's nodes by reference y (rounded to 1e-9): in each
+  /// layer ordered by reference x, the halves told apart by reference z
+  /// (above or below the axis, z = 1), checked in the x-z plane.
+  std::map<long long, std::vector<SurfaceCrossing::Node>>
   layers(const std::string &folder)
   {
-    std::map<long long, std::vector<Node>> nodes;
+    std::map<long long, std::vector<SurfaceCrossing::Node>> nodes;
     for (const auto &row : read_csv(folder + "/contact_profile_pair2.csv"))
       nodes[std::llround(row.at("Xy") * 1e9)].push_back(
         {row.at("Xx"), row.at("Xz"), row.at("x"), row.at("z")});
     return nodes;
   }
 
-  /// The largest distance of a node of one half beyond the other half's
-  /// polyline (> 0: crossed), over every layer. Halves: reference z above
-  /// or below the axis (z = 1), each a polyline ordered by reference x.
   double
-  largest_crossing(const std::map<long long, std::vector<Node>> &all)
+  largest_crossing(const std::map<long long, std::vector<SurfaceCrossing::Node>> &all)
   {
     double worst = -1e300;
     for (const auto &layer : all)
-      {
-        std::vector<Node> upper, lower;
-        for (const auto &n : layer.second)
-          (n.Z > 1. ? upper : lower).push_back(n);
-        const auto by_x = [](const Node &a, const Node &b) { return a.X < b.X; };
-        std::sort(upper.begin(), upper.end(), by_x);
-        std::sort(lower.begin(), lower.end(), by_x);
-        const auto check = [&worst](const std::vector<Node> &line,
-                                    const std::vector<Node> &others,
-                                    const double             sign) {
-          for (const auto &n : others)
-            for (std::size_t k = 0; k + 1 < line.size(); ++k)
-              {
-                const Node &a = line[k], &b = line[k + 1];
-                if (!(b.x > a.x) || n.x < a.x || n.x > b.x)
-                  continue;
-                const double z = a.z + (b.z - a.z) * (n.x - a.x) / (b.x - a.x);
-                worst          = std::max(worst, sign * (n.z - z));
-              }
-        };
-        check(upper, lower, 1.);
-        check(lower, upper, -1.);
-      }
+      worst = std::max(worst, SurfaceCrossing::largest_crossing(layer.second, 1.));
     return worst;
   }
 } // namespace
