@@ -113,7 +113,9 @@ namespace RunOutput
         {
           char        *end   = nullptr;
           const double value = std::strtod(text.c_str() + i, &end);
-          if (key != "peak memory MB")
+          // Timings and memory differ from run to run (also a contact
+          // pair's "search wall time [s]" inside the contact block).
+          if (key != "peak memory MB" && key.find("wall time") == std::string::npos)
             numbers.emplace_back(key, value);
           i = end - text.c_str() - 1;
         }
