@@ -302,8 +302,8 @@ namespace Signorini
       , mapping(mapping)
       , boundary(dof_handler, mapping)
       , target(dof_handler, mapping)
-      , contact_ids({contact_boundary})
-      , target_ids({parameters.target_boundary})
+      , contact_ids{contact_boundary}
+      , target_ids{parameters.target_boundary}
     {}
 
     template <int dim>
