@@ -534,6 +534,20 @@ main()
                  "    subsection Pair 3\n      subsection Hertz reference\n"
                  "        set Line load = 0\n      end\n    end\n"),
            out);
+  // A body's self-contact: without ids, an id of another body, with
+  // Type = two bodies.
+  run_case("body_self_contact_no_ids",
+           stack("subsection Body 2\n  set Self contact = true\nend\n"), out);
+  run_case("body_self_contact_other_body",
+           stack("subsection Body 2\n  set Self contact = true\n"
+                 "  set Self contact boundary ids = 20\nend\n"),
+           out);
+  run_case("body_self_contact_not_pairs",
+           two_bodies("10", "  subsection Two bodies\n    set Target boundary id = 13\n  end\n",
+                      "newton-penalty") +
+             "subsection Body 1\n  set Self contact = true\n"
+             "  set Self contact boundary ids = 0\nend\n",
+           out);
   // Fixed points: no vertex there; a point of one coordinate.
   run_case("fixed_point_no_vertex",
            stack("subsection Boundary conditions\n  set Fixed points = 0.123, 4.5: x\nend\n"),

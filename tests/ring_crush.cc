@@ -13,6 +13,8 @@
 //   radius of 100, beyond the ring: every face is skipped): the inner
 //   surfaces pass through each other, by more than 0.1 (the walls, 4.4
 //   thick, in a gap of 4.0): the check above is real;
+// - the same declared as 'Body 1 > Self contact' instead of the pairs'
+//   list: the same reaction and self-contact force;
 // - the full ring (plate x in [-8, 8], u_x held at the ring's lowest and
 //   highest points, 'Fixed points'): its plate reaction is twice the half
 //   model's within 0.5%.
@@ -106,6 +108,21 @@ main()
       << "; the inner surfaces pass through each other by more than 0.1: "
       << verdict(through > 0.1) << "\n";
   std::cerr << "without self-contact: crossing " << through << "\n";
+
+  // The same self-contact declared on the body ('Body 1 > Self contact'):
+  // the same pair, the same answer.
+  const int    shorthand = RunOutput::run_scene(
+    "body", "ring_crush.prm",
+    "subsection Contact\n subsection Pairs\n  set Self-contact boundary ids =\n end\nend\n"
+    "subsection Body 1\n set Self contact = true\n set Self contact boundary ids = 0\nend\n");
+  const double body_reaction = summary_quantity("body/summary.json", "reaction_y_boundary_13");
+  const double body_self = summary_quantity("body/summary.json", "pair2_self_contact_force");
+  out << "Body 1 > Self contact instead of the pairs' list: exits 0: "
+      << verdict(shorthand == 0) << "; the same reaction and self-contact force (1e-12): "
+      << verdict(std::abs(body_reaction / reaction - 1.) <= 1e-12 &&
+                 std::abs(body_self / self_force - 1.) <= 1e-12)
+      << "\n";
+  std::cerr << "body shorthand: reaction " << body_reaction << " self " << body_self << "\n";
 
   // The full ring: twice the half's reaction.
   const int full = RunOutput::run_scene(

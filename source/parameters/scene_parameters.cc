@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace Signorini
@@ -105,6 +106,21 @@ namespace Signorini
                         "Cells with this material id belong to the body "
                         "(generated meshes give all the body's cells this "
                         "id; in a Gmsh file it is the physical tag).");
+      prm.declare_entry("Self contact",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether this body may fold onto itself: each of its "
+                        "'Self contact boundary ids' is kept out of the body "
+                        "itself, as a self-contact pair of Contact > Type = "
+                        "pairs (the same as listing the ids in Contact > "
+                        "Pairs > Self-contact boundary ids; numbered after "
+                        "those).");
+      prm.declare_entry("Self contact boundary ids",
+                        "",
+                        Patterns::Anything(),
+                        "With 'Self contact = true': the boundary ids of this "
+                        "body, separated by commas, that may touch the body "
+                        "itself (e.g. 0, a ring's or tube's inner surface).");
       prm.enter_subsection("Geometry");
       BodyGeometry::declare_parameters(prm);
       prm.leave_subsection();
@@ -388,6 +404,23 @@ namespace Signorini
                                    "material id " +
                                      std::to_string(body.material_id) +
                                      " is already used by another body");
+              if (prm.get_bool("Self contact"))
+                {
+                  const std::string key = section + " > Self contact boundary ids";
+                  for (const auto &entry :
+                       Utilities::split_string_list(prm.get("Self contact boundary ids")))
+                    {
+                      char      *end = nullptr;
+                      const long id  = std::strtol(entry.c_str(), &end, 10);
+                      if (entry.empty() || *end != '\0' || id < 0 || id > 255)
+                        throw InputError(key, "'" + entry +
+                                                "' is not a boundary id (0 to 255)");
+                      body.self_contact_ids.push_back(static_cast<types::boundary_id>(id));
+                    }
+                  if (body.self_contact_ids.empty())
+                    throw InputError(key, "'Self contact = true' needs the boundary ids "
+                                          "of this body that may touch it");
+                }
               prm.enter_subsection("Geometry");
               body.geometry.parse_parameters(prm, dim, section + " > Geometry");
               prm.leave_subsection();
@@ -451,10 +484,16 @@ namespace Signorini
             compliance += hertz_compliance(bodies[b]);
           hertz.contact_modulus = 1. / compliance;
         }
-      if (const auto *pairs =
-            dynamic_cast<const Signorini::Contact::ParsedParameters<
-              Signorini::Contact::PairsParameters> *>(contact.model_parameters.get()))
-        parse_pairs(pairs->value);
+      const auto *pairs_parameters =
+        dynamic_cast<const Signorini::Contact::ParsedParameters<
+          Signorini::Contact::PairsParameters> *>(contact.model_parameters.get());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].self_contact_ids.empty() && !pairs_parameters)
+          throw InputError(Body::section(b) + " > Self contact",
+                           "self-contact is a contact pair: it needs Contact > "
+                           "Type = pairs");
+      if (pairs_parameters)
+        parse_pairs(pairs_parameters->value);
 
       postprocess.parse_parameters(prm, dim);
       checkpoint.parse_parameters(prm);
@@ -483,6 +522,31 @@ namespace Signorini
                          "with Type = pairs each pair has its own reference: "
                          "Contact > Pairs > Pair K > Hertz reference");
       pairs.body_material_ids = material_ids();
+      // The bodies' self-contact boundaries: pairs after the listed ones,
+      // before the foundation's (whose Hertz references move with them).
+      for (const auto &body : bodies)
+        for (const auto id : body.self_contact_ids)
+          {
+            const std::string key =
+              Body::section(&body - bodies.data()) + " > Self contact boundary ids";
+            for (const auto &other : pairs.pairs)
+              if (other.self && other.contact == id)
+                throw InputError(key, "boundary id " + std::to_string(id) +
+                                        " is already a self-contact pair");
+            if (mesh.source == MeshParameters::Source::generated)
+              {
+                const auto own = body.geometry.boundary_ids(dim);
+                if (std::find(own.begin(), own.end(), id) == own.end())
+                  throw InputError(key, "boundary id " + std::to_string(id) +
+                                          " is not one of this body's");
+              }
+            Signorini::Contact::PairsParameters::Pair pair;
+            pair.contact = pair.target = id;
+            pair.self                  = true;
+            pairs.hertz.insert(pairs.hertz.begin() + pairs.pairs.size(),
+                               Signorini::Contact::HertzReference());
+            pairs.pairs.push_back(pair);
+          }
       // The body that carries boundary @p id (a generated mesh: the
       // shapes' ids), or none.
       const auto body_of = [&](const types::boundary_id id) -> const Body * {

@@ -88,6 +88,9 @@ namespace Signorini
       BodyGeometry                         geometry;
       std::shared_ptr<Material::Interface> material;
       bool                                 incompressible = false;
+      /// 'Self contact boundary ids' with 'Self contact = true': each kept
+      /// out of this body (a self-contact pair of Contact > Type = pairs).
+      std::vector<types::boundary_id>      self_contact_ids;
 
       /// "Body N" for the body with index @p b (0-based).
       static std::string
