@@ -126,6 +126,13 @@ expect history/contact_history.png
 run plot_ironing 0 bash "$src/scripts/plot_ironing.sh" ironing drill/reference/run drill/drill/run
 expect ironing/ironing_reactions.png ironing/ironing_steps.png
 
+# The ring crush's reaction against stroke, on a coarse ring (64 cells).
+printf 'include %s\nset Output directory = ring_crush_half\nsubsection Mesh\n  set Global refinements = 1\nend\nsubsection Output\n  set Format = none\nend\n' \
+  "$src/prm/ring_crush.prm" > ring.prm
+run ring 0 "$binary" ring.prm
+run plot_ring_crush 0 python3 "$src/scripts/plot_ring_crush.py" ring.png ring_crush_half
+expect ring.png
+
 cat > study.prm <<EOF
 include $src/prm/hertz_adaptive.prm
 set Output directory = study
