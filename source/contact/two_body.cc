@@ -337,18 +337,20 @@ namespace Signorini
               exclusion_radius_ = 3. * largest;
             }
           find_excluded_faces();
+          // For summary.json, which one rank writes: no collective there.
+          unsigned long long skipped = 0;
+          for (const auto &faces : skip_points)
+            skipped += faces.size();
+          skipped_per_point = static_cast<double>(Utilities::MPI::sum(skipped, comm)) /
+                              std::max(1u, Utilities::MPI::sum(static_cast<unsigned int>(
+                                                                 points.size()),
+                                                               comm));
         }
       find_extra_rows(constraints);
 
       stats                = PairStatistics();
       stats.target_faces   = faces2.size();
       stats.points         = Utilities::MPI::sum(static_cast<unsigned int>(points.size()), comm);
-      // For summary.json, which one rank writes: no collective there.
-      unsigned long long skipped = 0;
-      for (const auto &faces : skip_points)
-        skipped += faces.size();
-      skipped_per_point = static_cast<double>(Utilities::MPI::sum(skipped, comm)) /
-                          std::max(1u, stats.points);
       pattern.clear();
     }
 

@@ -114,6 +114,26 @@ namespace Signorini
     }
 
     template <int dim>
+    void
+    TwoBodyContact<dim>::candidate_faces(
+      const FaceTree                                         &tree,
+      const Point<dim>                                       &x,
+      const std::vector<Point1>                              &list,
+      const unsigned int                                      k,
+      std::vector<std::pair<BoundingBox<dim>, unsigned int>> &hits) const
+    {
+      hits.clear();
+      {
+        const SearchClock clock(stats.search_seconds);
+        tree.query(bgi::intersects(x), std::back_inserter(hits));
+      }
+      if (self)
+        hits.erase(std::remove_if(hits.begin(), hits.end(),
+                                  [&](const auto &hit) { return skips(list, k, hit.second); }),
+                   hits.end());
+    }
+
+    template <int dim>
     std::vector<std::pair<unsigned int, unsigned int>>
     TwoBodyContact<dim>::find_pairs(const std::vector<Point1>             &pts,
                                     const VectorType                      &u,
@@ -127,15 +147,9 @@ namespace Signorini
       for (unsigned int k = 0; k < pts.size(); ++k)
         {
           const Point<dim> x = position(pts[k], u);
-          hits.clear();
-          {
-            const SearchClock clock(stats.search_seconds);
-            tree.query(bgi::intersects(x), std::back_inserter(hits));
-          }
+          candidate_faces(tree, x, pts, k, hits);
           for (const auto &hit : hits)
-            if (!skips(pts, k, hit.second) &&
-                (!positive_only ||
-                 faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.))
+            if (!positive_only || faces[hit.second].value(x, prm.stretch, prm.apex_depth) > 0.)
               pairs.emplace_back(k, hit.second);
         }
       return pairs;
@@ -211,16 +225,10 @@ namespace Signorini
       for (unsigned int k = 0; k < node_points.size(); ++k)
         {
           const Point<dim> x = position(node_points[k], u);
-          hits.clear();
-          {
-            const SearchClock clock(stats.search_seconds);
-            tree.query(bgi::intersects(x), std::back_inserter(hits));
-          }
+          candidate_faces(tree, x, node_points, k, hits);
           double best = std::numeric_limits<double>::infinity();
           for (const auto &hit : hits)
             {
-              if (skips(node_points, k, hit.second))
-                continue;
               Partner        p;
               Tensor<1, dim> face_normal;
               const double   d = closest_point(faces[hit.second], x, p.shape, face_normal);
@@ -351,17 +359,7 @@ namespace Signorini
         for (unsigned int k = 0; k < list->size(); ++k)
           {
             const Point<dim> x = position((*list)[k], u);
-            hits.clear();
-            {
-              const SearchClock clock(stats.search_seconds);
-              tree.query(bgi::intersects(x), std::back_inserter(hits));
-            }
-            if (self)
-              hits.erase(std::remove_if(hits.begin(), hits.end(),
-                                        [&](const auto &hit) {
-                                          return skips(*list, k, hit.second);
-                                        }),
-                         hits.end());
+            candidate_faces(tree, x, *list, k, hits);
             // The crest is judged along the inward direction of the face of
             // the point's cell that it lies below, the nearest one where a
             // cell has several faces on the target (a corner of the
@@ -456,11 +454,7 @@ namespace Signorini
         depths->assign(x.size(), 0.);
       for (unsigned int k = 0; k < x.size(); ++k)
         {
-          hits.clear();
-          {
-            const SearchClock clock(stats.search_seconds);
-            tree.query(bgi::intersects(x[k]), std::back_inserter(hits));
-          }
+          candidate_faces(tree, x[k], list, k, hits);
           // A point penetrates only inside one of the target's cells (its
           // depth is still the smallest below any face that sees it): the
           // layer of a face reaches past the face's ends (its ramp or its
@@ -471,8 +465,6 @@ namespace Signorini
           bool   inside = false;
           for (const auto &hit : hits)
             {
-              if (skips(list, k, hit.second))
-                continue;
               const auto  &face = faces[hit.second];
               const double d    = face.depth(x[k], prm.stretch, prm.apex_depth);
               if (d >= 0. && (depth < 0. || d < depth))

@@ -483,6 +483,7 @@ namespace Signorini
     hanging_constraints.reinit(locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
     hanging_constraints.close();
+    locate_fixed_points();
     homogeneous_constraints = boundary_constraints(0., true);
 
     solution.reinit(locally_owned, comm);
@@ -552,17 +553,19 @@ namespace Signorini
           static_cast<const Function<dim> &>(zero),
         constraints,
         ComponentMask(part.components));
-    add_fixed_points(constraints);
+    for (const auto dof : fixed_point_dofs)
+      if (!constraints.is_constrained(dof))
+        constraints.add_line(dof);
     constraints.close();
     return constraints;
   }
 
   template <int dim>
   void
-  Scene<dim>::add_fixed_points(AffineConstraints<double> &constraints) const
+  Scene<dim>::locate_fixed_points()
   {
-    // Each point's vertex: the nearest one within 1e-8 of the mesh's size
-    // (checked once, on every rank together, when first used).
+    // Each point's vertex: one within 1e-8 of the mesh's size.
+    fixed_point_dofs.clear();
     if (bc.fixed_points().empty())
       return;
     const double size = GridTools::diameter(triangulation);
@@ -577,17 +580,17 @@ namespace Signorini
                   found = true;
                   for (unsigned int c = 0; c < dim; ++c)
                     if (fixed.components[c])
-                      {
-                        const auto dof = cell->vertex_dof_index(v, c);
-                        if (!constraints.is_constrained(dof))
-                          constraints.add_line(dof);
-                      }
+                      fixed_point_dofs.push_back(cell->vertex_dof_index(v, c));
                 }
         if (!Utilities::MPI::logical_or(found, triangulation.get_communicator()))
           throw InputError("Boundary conditions > Fixed points",
                            "'" + fixed.text + "' is not a vertex of the mesh "
                            "(none within 1e-8 of the scene's size)");
       }
+    // A vertex is found from each of its cells.
+    std::sort(fixed_point_dofs.begin(), fixed_point_dofs.end());
+    fixed_point_dofs.erase(std::unique(fixed_point_dofs.begin(), fixed_point_dofs.end()),
+                           fixed_point_dofs.end());
   }
 
   template <int dim>

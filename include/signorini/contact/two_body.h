@@ -570,6 +570,17 @@ namespace Signorini
       FaceTree
       face_tree(const std::vector<IndicatorFace<dim>> &faces, const double margin) const;
 
+      /// The faces of @p tree whose boxes hold @p x, point @p k of @p list
+      /// (points or node_points), into @p hits: the R-tree's query (timed as
+      /// search) without the faces the point skips (self-contact, all
+      /// bodies).
+      void
+      candidate_faces(const FaceTree                                         &tree,
+                      const Point<dim>                                       &x,
+                      const std::vector<Point1>                              &list,
+                      const unsigned int                                      k,
+                      std::vector<std::pair<BoundingBox<dim>, unsigned int>> &hits) const;
+
       /// Pairs (point, face) whose face box, grown by @p margin face
       /// sizes, contains the point; with @p positive_only only those
       /// where Phi's face term is > 0.

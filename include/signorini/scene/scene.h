@@ -122,10 +122,11 @@ namespace Signorini
     AffineConstraints<double>
     boundary_constraints(const double time, const bool homogeneous) const;
 
-    /// The zero displacement of 'Fixed points' at their vertices (InputError
-    /// if a point is no vertex of the mesh; collective).
+    /// The DoFs of 'Fixed points' on this mesh into fixed_point_dofs
+    /// (InputError if a point is no vertex of the mesh; collective; once
+    /// per mesh, in setup_dofs()).
     void
-    add_fixed_points(AffineConstraints<double> &constraints) const;
+    locate_fixed_points();
 
     /// Hanging nodes, and on Dirichlet DoFs the step from the current
     /// solution to the values at @p time.
@@ -156,6 +157,8 @@ namespace Signorini
     IndexSet                                   locally_relevant;
     AffineConstraints<double>                  hanging_constraints;
     AffineConstraints<double>                  homogeneous_constraints;
+    /// The locally relevant DoFs that 'Fixed points' hold at zero.
+    std::vector<types::global_dof_index>       fixed_point_dofs;
 
     BoundaryConditions<dim>                                   bc;
     std::map<types::material_id, const Material::Interface *> materials;
