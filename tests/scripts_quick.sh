@@ -110,10 +110,14 @@ expect comparison/ipopt_L3/summary.json comparison/interior-point_L3/summary.jso
   comparison/newton-penalty_L3/summary.json
 expect_text solver_comparison.log "| 3 | interior-point |"
 
-run two_body_large 0 python3 "$b/two_body_large.py" --quick --binary "$binary" \
+run two_body_large 0 python3 "$b/large_3d.py" --quick --binary "$binary" \
   --work large --markdown large.md
 expect large/run0/summary.json
 expect_text large.md "<!-- two-body-large BEGIN -->"
+run many_bodies_large 0 python3 "$b/large_3d.py" --scene many-bodies --quick \
+  --binary "$binary" --work many --markdown many.md
+expect many/run0/summary.json
+expect_text many.md "<!-- many-bodies-large BEGIN -->"
 
 # Plot scripts, on small runs of the tutorial scene and of a study.
 printf 'include %s\nset Output directory = punch\nsubsection Mesh\n  set Gmsh file = %s\nend\n' \
