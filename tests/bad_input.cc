@@ -522,9 +522,21 @@ main()
   run_case("self_contact_twice", pairs("    set Self-contact boundary ids = 10, 10\n"),
            out);
   run_case("pairs_same_boundary", pairs("    set Two-body pairs = 10:10\n"), out);
-  // All bodies: 'all' without its boundaries, boundaries without 'all',
-  // one boundary only, a Hertz reference for the all-bodies part.
-  run_case("pairs_all_without_boundaries", pairs("    set Two-body pairs = all\n"), out);
+  // All bodies: 'all' (the default) without its boundaries on a Gmsh mesh
+  // of several bodies, no pair at all ('none' and no other pair),
+  // boundaries without 'all', one boundary only, a Hertz reference for
+  // the all-bodies part.
+  run_case("pairs_all_gmsh",
+           stack("subsection Mesh\n  set Source = gmsh\n  set Gmsh file = " +
+                 std::string(SIGNORINI_SOURCE_DIR) +
+                 "/tests/data/square_2x2.msh\nend\n"
+                 "subsection Contact\n  subsection Pairs\n    set Two-body pairs = all\n" +
+                 no_hertz + "  end\nend\n"),
+           out);
+  run_case("pairs_none",
+           pairs("    set Two-body pairs = none\n    set Foundation boundary ids =\n" +
+                 no_hertz),
+           out);
   run_case("pairs_boundaries_without_all", pairs("    set Contact boundaries = 0, 10\n"),
            out);
   run_case("pairs_all_one_boundary",

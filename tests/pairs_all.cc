@@ -13,6 +13,8 @@
 //   evaluated at the last step are at most 2.5 times those of the scene's
 //   two listed pairs (both sides of each contact are points now: about 2),
 //   though every body is tested against every other.
+// - the default ('Two-body pairs = all' without 'Contact boundaries':
+//   the free surfaces, here the three arcs) gives the same forces.
 // Only verdicts are printed.
 
 #include "run_output.h"
@@ -92,6 +94,22 @@ main()
           << verdict(std::abs(peak / p0 - 1.) <= 0.02) << "\n";
       std::cerr << "y " << c.y << " peak " << peak << " p0 " << p0 << "\n";
     }
+
+  // The default: 'all' over the free surfaces (the three arcs, the ids no
+  // boundary condition names) gives the same part and the same numbers.
+  const int automatic = RunOutput::run_scene(
+    "automatic", "disk_stack.prm",
+    "subsection Contact\n  subsection Pairs\n    set Two-body pairs = all\n" + no_hertz +
+      "  end\nend\n");
+  const std::string a    = "automatic/summary.json";
+  double            diff = 0.;
+  for (const char *q : {"body1_contact_force_y", "body2_contact_force_y", "body3_contact_force_y",
+                        "pair2_contact_force_y"})
+    diff = std::max(diff, std::abs(summary_quantity(a, q) - summary_quantity(s, q)));
+  out << "the default (free surfaces): exits 0: " << verdict(automatic == 0)
+      << "; the same forces as the named surfaces (1e-12 of the load): "
+      << verdict(diff <= 1e-12 * half) << "\n";
+  std::cerr << "default against named: " << diff << "\n";
 
   const int listed = RunOutput::run_scene("listed", "disk_stack.prm", "");
   const double all_pairs = last_evaluated_pairs("all");

@@ -22,7 +22,7 @@ namespace Signorini
     {
       prm.enter_subsection("Pairs");
       prm.declare_entry("Two-body pairs",
-                        "",
+                        "all",
                         Patterns::Anything(),
                         "The two-body contacts of Type = pairs, as "
                         "'contact:target' boundary id pairs separated by "
@@ -34,13 +34,15 @@ namespace Signorini
                         "every pair its form and settings (not its target "
                         "id). A boundary may be the target of one pair and "
                         "the contact boundary of another. Pair K is the "
-                        "K-th entry. 'all': every body against every other "
-                        "through the surfaces 'Contact boundaries', as one "
-                        "pair (pair 1) with one search over all of them "
-                        "(a point meets the faces near it, of any other "
-                        "body: the search costs what the contact zones "
-                        "cost, not what the pairs of bodies do); its "
-                        "output is per body (bodyB_contact_force_*).");
+                        "K-th entry. 'all' (the default): every body "
+                        "against every other through the surfaces "
+                        "'Contact boundaries', as one pair (pair 1) with "
+                        "one search over all of them (a point meets the "
+                        "faces near it, of any other body: the search "
+                        "costs what the contact zones cost, not what the "
+                        "pairs of bodies do); its output is per body "
+                        "(bodyB_contact_force_*). 'none': no two-body "
+                        "pairs (only self-contact and foundation ones).");
       prm.declare_entry("Contact boundaries",
                         "",
                         Patterns::Anything(),
@@ -48,7 +50,14 @@ namespace Signorini
                         "separated by commas, that may touch another "
                         "body (on two bodies at least; a body may have "
                         "several). Not the loaded, symmetry or clamped "
-                        "boundaries.");
+                        "boundaries. Empty: the free surfaces of the "
+                        "built-in shapes, every boundary id of a body "
+                        "that no 'Fixed boundaries', 'Prescribed "
+                        "boundaries' or 'Traction boundaries' entry names, "
+                        "if two bodies or more have one (else no two-body "
+                        "pair); a Gmsh mesh must name them. The pair then "
+                        "comes first (pair 1), before the pairs whose "
+                        "'Pair K' subsections number them from 1.");
       prm.declare_entry("Self-contact boundary ids",
                         "",
                         Patterns::Anything(),
@@ -137,14 +146,14 @@ namespace Signorini
                              "boundary id " + entry + " is given twice");
           contact_boundaries.push_back(id);
         }
-      const bool all = Utilities::trim(prm.get(pairs_key)) == "all";
-      if (all != !contact_boundaries.empty())
+      const std::string listed = Utilities::trim(prm.get(pairs_key));
+      const bool        all    = listed == "all";
+      automatic_all            = all && contact_boundaries.empty();
+      if (!all && !contact_boundaries.empty())
         throw InputError("Contact > Pairs > " + boundaries_key,
-                         all ? "'Two-body pairs = all' needs the surfaces that "
-                               "may touch (at least two boundary ids)" :
-                               "'Contact boundaries' goes with 'Two-body pairs = "
-                               "all' (a list of pairs names its boundaries)");
-      if (all)
+                         "'Contact boundaries' goes with 'Two-body pairs = "
+                         "all' (a list of pairs names its boundaries)");
+      if (all && !automatic_all)
         {
           if (contact_boundaries.size() < 2)
             throw InputError("Contact > Pairs > " + boundaries_key,
@@ -155,8 +164,9 @@ namespace Signorini
           pair.all                   = true;
           pairs.push_back(pair);
         }
-      for (const auto &entry :
-           all ? std::vector<std::string>() : Utilities::split_string_list(prm.get(pairs_key)))
+      for (const auto &entry : all || listed == "none" ?
+                                 std::vector<std::string>() :
+                                 Utilities::split_string_list(listed))
         {
           const auto ids = Utilities::split_string_list(entry, ':');
           if (ids.size() != 2)
@@ -200,9 +210,10 @@ namespace Signorini
                              "boundary id " + entry + " is given twice");
           foundation_ids.push_back(id);
         }
-      if (n_pairs() == 0)
+      if (n_pairs() == 0 && !automatic_all)
         throw InputError("Contact > Pairs > " + pairs_key,
-                         "Type = pairs needs at least one two-body pair or "
+                         "Type = pairs needs at least one pair: a two-body "
+                         "pair ('none' gives none), a self-contact or a "
                          "foundation boundary id");
       hertz.assign(n_pairs(), HertzReference());
       for (unsigned int k = 0; k < max_described_pairs; ++k)

@@ -510,6 +510,69 @@ namespace Signorini
       return (1. - nu * nu) / E;
     }
 
+    namespace
+    {
+      /// The boundary ids a 'Boundary conditions' list names: the text
+      /// before ':' of each comma-separated entry ('1: x, 3: y' or '2, 12').
+      std::set<types::boundary_id>
+      listed_boundary_ids(const std::string &list)
+      {
+        std::set<types::boundary_id> ids;
+        for (const auto &entry : Utilities::split_string_list(list))
+          {
+            const std::string id = Utilities::trim(entry.substr(0, entry.find(':')));
+            char             *end = nullptr;
+            const long        value = std::strtol(id.c_str(), &end, 10);
+            if (!id.empty() && *end == '\0' && value >= 0 && value <= 255)
+              ids.insert(static_cast<types::boundary_id>(value));
+          }
+        return ids;
+      }
+    } // namespace
+
+    void
+    Scene::add_free_surface_pair(Signorini::Contact::PairsParameters &pairs) const
+    {
+      const unsigned int dim = global.dimension;
+      const std::string  key = "Contact > Pairs > Contact boundaries";
+      if (mesh.source != MeshParameters::Source::generated)
+        {
+          if (bodies.size() < 2)
+            return;
+          throw InputError(key, "the bodies of a Gmsh mesh do not say which of "
+                                "their surfaces may touch before it is read: "
+                                "name them, or set 'Two-body pairs' to a list "
+                                "of pairs or to none");
+        }
+      std::set<types::boundary_id> conditions;
+      for (const auto *list : {&boundary_conditions.fixed_boundaries,
+                               &boundary_conditions.prescribed_boundaries,
+                               &boundary_conditions.traction_boundaries})
+        for (const auto id : listed_boundary_ids(*list))
+          conditions.insert(id);
+      std::vector<types::boundary_id> free;
+      unsigned int                    bodies_with_free = 0;
+      for (const auto &body : bodies)
+        {
+          bool any = false;
+          for (const auto id : body.geometry.boundary_ids(dim))
+            if (!conditions.count(id))
+              {
+                free.push_back(id);
+                any = true;
+              }
+          bodies_with_free += any;
+        }
+      if (bodies_with_free < 2)
+        return;
+      Signorini::Contact::PairsParameters::Pair pair;
+      pair.contact = pair.target = free.front();
+      pair.all                   = true;
+      pairs.contact_boundaries   = free;
+      pairs.pairs.insert(pairs.pairs.begin(), pair);
+      pairs.hertz.insert(pairs.hertz.begin(), Signorini::Contact::HertzReference());
+    }
+
     void
     Scene::parse_pairs(const Signorini::Contact::PairsParameters &parsed)
     {
@@ -547,6 +610,14 @@ namespace Signorini
                                Signorini::Contact::HertzReference());
             pairs.pairs.push_back(pair);
           }
+      if (pairs.automatic_all)
+        add_free_surface_pair(pairs);
+      if (pairs.n_pairs() == 0)
+        throw InputError("Contact > Pairs > Two-body pairs",
+                         "Type = pairs needs at least one pair: the default "
+                         "'all' found free surfaces on fewer than two bodies, "
+                         "and there is no self-contact or foundation boundary "
+                         "id");
       // The body that carries boundary @p id (a generated mesh: the
       // shapes' ids), or none.
       const auto body_of = [&](const types::boundary_id id) -> const Body * {

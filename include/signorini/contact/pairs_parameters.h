@@ -48,6 +48,10 @@ namespace Signorini
       std::vector<Pair> pairs;
       /// 'Contact boundaries' (with 'Two-body pairs = all').
       std::vector<types::boundary_id> contact_boundaries;
+      /// 'Two-body pairs = all' (the default) without 'Contact boundaries':
+      /// the scene adds the all-bodies pair over the bodies' free surfaces
+      /// (Scene::parse_pairs), if two bodies have one.
+      bool automatic_all = false;
       /// 'Self-contact exclusion radius' (0: automatic).
       double self_exclusion_radius = 0.;
       /// 'Foundation boundary ids'.

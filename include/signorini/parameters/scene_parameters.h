@@ -229,6 +229,13 @@ namespace Signorini
       /// parameters; a scene-wide Hertz reference is refused.
       void
       parse_pairs(const Signorini::Contact::PairsParameters &pairs);
+
+      /// 'Two-body pairs = all' without 'Contact boundaries': the
+      /// all-bodies pair over the free surfaces of the built-in shapes
+      /// (the ids no boundary condition names), as pair 1, if two bodies
+      /// have one; InputError on a Gmsh mesh of several bodies.
+      void
+      add_free_surface_pair(Signorini::Contact::PairsParameters &pairs) const;
     };
   } // namespace Parameters
 
