@@ -313,6 +313,8 @@ namespace Signorini
     {
       const MPI_Comm comm = dof_handler.get_communicator();
       relevant            = DoFTools::extract_locally_relevant_dofs(dof_handler);
+      record_hanging.clear();
+      record_hanging.copy_from(hanging_constraints);
       boundary.setup(contact_ids, hanging_constraints);
       // Self-contact and all bodies: the contact nodes carry every force
       // (no second record of the same nodes).
@@ -749,13 +751,35 @@ namespace Signorini
       const AffineConstraints<double> &c =
         (rhs || hessian) ? assembly_constraints(constraints) : constraints;
       VectorType force_vector;
+      IndexSet   writable;
       if (forces)
         {
           // Body 2's DoFs of a pair may be owned elsewhere (extra_rows).
           IndexSet ghosts = relevant;
           ghosts.add_indices(extra_rows);
           force_vector.reinit(dof_handler.locally_owned_dofs(), ghosts, comm, true);
+          writable = ghosts;
+          writable.add_indices(dof_handler.locally_owned_dofs());
         }
+      // The record's share @p value of DoF @p dof: on the DoFs it follows
+      // if it hangs (the nodes of the record are not hanging), so that the
+      // record's sums are the forces' (a locally refined target).
+      const auto record = [&](const types::global_dof_index dof, const double value) {
+        if (record_hanging.is_constrained(dof))
+          {
+            const auto &entries = *record_hanging.get_constraint_entries(dof);
+            bool        known   = true;
+            for (const auto &e : entries)
+              known = known && writable.is_element(e.first);
+            if (known)
+              {
+                for (const auto &e : entries)
+                  force_vector(e.first) += e.second * value;
+                return;
+              }
+          }
+        force_vector(dof) += value;
+      };
 
       std::string            projection_failure; // the first on this rank
       constexpr unsigned int n_variables = IndicatorFace<dim>::n_variables;
@@ -830,13 +854,13 @@ namespace Signorini
           if (forces)
             {
               for (unsigned int j = 0; j < n1; ++j)
-                force_vector(p.dofs[j]) += -scale * fac[j] * g(var[j]);
+                record(p.dofs[j], -scale * fac[j] * g(var[j]));
               // The reaction on body 2's vertices; lumped, the share of the
               // opposite face's vertices goes to the face's own (the vertex
               // of the same position in the face).
               for (unsigned int j = 0; j < n_target_dofs; ++j)
-                force_vector(faces2[pair.second].dofs[lumped_reaction ? j % (n_target_dofs / 2) : j]) +=
-                  -scale * g(dim + j);
+                record(faces2[pair.second].dofs[lumped_reaction ? j % (n_target_dofs / 2) : j],
+                       -scale * g(dim + j));
             }
           if (!rhs && !hessian)
             continue;

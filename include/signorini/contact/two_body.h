@@ -656,6 +656,10 @@ namespace Signorini
       double              min_face_size = 0., mean_face_size = 0.;
       double              min_layer = 0.; // thinnest layer where Phi > 0
       IndexSet            relevant, extra_rows;
+      /// The hanging-node constraints of the last setup(): the force record
+      /// moves what falls on a hanging DoF to the DoFs it follows (the
+      /// record's nodes leave hanging nodes out).
+      AffineConstraints<double> record_hanging;
 
       std::set<std::pair<unsigned int, unsigned int>> pattern;
       // set_node_couplings()'s, and those in the sparsity pattern.
