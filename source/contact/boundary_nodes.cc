@@ -27,6 +27,7 @@ namespace Signorini
     BoundaryNodes<dim>::setup(const std::set<types::boundary_id> &boundary_ids,
                               const AffineConstraints<double>    &hanging_constraints)
     {
+      ids                         = boundary_ids;
       const MPI_Comm     comm     = dof_handler.get_communicator();
       const auto        &fe       = dof_handler.get_fe();
       const IndexSet     owned    = dof_handler.locally_owned_dofs();

@@ -315,9 +315,11 @@ namespace Signorini
     Vector<float>
     contact(const DoFHandler<dim>             &dof_handler,
             const Contact::BoundaryNodes<dim> &nodes,
-            const types::boundary_id           contact_id,
             const std::vector<double>         &pressures)
     {
+      // Every face the nodes lie on: one contact boundary, or with pairs
+      // every pair's contact and target surfaces.
+      const auto &contact_ids = nodes.boundary_ids();
       const auto   &tria = dof_handler.get_triangulation();
       Vector<float> indicators(tria.n_active_cells());
       const VectorType p = nodes.nodal_field(pressures);
@@ -330,7 +332,7 @@ namespace Signorini
             double eta = 0.;
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == contact_id)
+                  contact_ids.count(cell->face(f)->boundary_id()) > 0)
                 {
                   cell->get_dof_indices(dofs);
                   double lo = std::numeric_limits<double>::max(), hi = -lo;
@@ -462,10 +464,7 @@ namespace Signorini
                                 parameters.zone_depth);
         }
       auto contact_indicator = [&]() {
-        return contact(dof_handler,
-                       term->contact_nodes_on_boundary(),
-                       term->contact_boundary_id(),
-                       pressures);
+        return contact(dof_handler, term->contact_nodes_on_boundary(), pressures);
       };
       Vector<float> indicators;
       if (estimator == Estimator::kelly || !term)
@@ -515,11 +514,11 @@ namespace Signorini
     kelly<3>(const Mapping<3> &, const DoFHandler<3> &, const VectorType &);
     template Vector<float>
     contact<2>(const DoFHandler<2> &,
-               const Contact::BoundaryNodes<2> &, const types::boundary_id,
+               const Contact::BoundaryNodes<2> &,
                const std::vector<double> &);
     template Vector<float>
     contact<3>(const DoFHandler<3> &,
-               const Contact::BoundaryNodes<3> &, const types::boundary_id,
+               const Contact::BoundaryNodes<3> &,
                const std::vector<double> &);
     template std::vector<bool>
     contact_zone<2>(const DoFHandler<2> &, const Contact::BoundaryNodes<2> &,

@@ -62,6 +62,12 @@ namespace Signorini
       {
         return node_list;
       }
+      /// The boundary ids of the last setup(): the faces the nodes lie on.
+      const std::set<types::boundary_id> &
+      boundary_ids() const
+      {
+        return ids;
+      }
       unsigned int
       n_global() const
       {
@@ -142,6 +148,7 @@ namespace Signorini
       const DoFHandler<dim>         &dof_handler;
       const Mapping<dim>            &mapping;
       std::vector<BoundaryNode<dim>> node_list;
+      std::set<types::boundary_id>   ids;
       unsigned int                   n_global_nodes = 0;
       unsigned int                   n_hanging_nodes  = 0;
       double                         mean_h         = 0.;

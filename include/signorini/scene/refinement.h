@@ -65,7 +65,8 @@ namespace Signorini
 
     /**
      * The contact indicator per active cell: for each face of the cell on
-     * Gamma_C, (max - min of the nodal contact pressure over the face's
+     * the boundaries of @p nodes (Gamma_C; with pairs every pair's contact
+     * and target surfaces), (max - min of the nodal contact pressure over the face's
      * nodes) times sqrt(|F|), the L2(F) size of the pressure's
      * interpolation error. Large on the contact zone's edges (where p
      * falls to 0) and where p varies quickly; zero away from contact.
@@ -75,7 +76,6 @@ namespace Signorini
     Vector<float>
     contact(const DoFHandler<dim>             &dof_handler,
             const Contact::BoundaryNodes<dim> &nodes,
-            const types::boundary_id           contact_id,
             const std::vector<double>         &pressures);
 
     /**
