@@ -464,6 +464,17 @@ namespace Signorini
     }
 
     template <int dim>
+    std::vector<typename Model<dim>::BandSurface>
+    MultiContact<dim>::band_surfaces() const
+    {
+      std::vector<typename Model<dim>::BandSurface> surfaces;
+      for (const Part &p : parts)
+        for (const auto &surface : p.model->band_surfaces())
+          surfaces.push_back(surface);
+      return surfaces;
+    }
+
+    template <int dim>
     double
     MultiContact<dim>::add_penalty(const VectorType                &u,
                                    const double                     mu,

@@ -116,8 +116,10 @@ namespace Signorini
                       "Before the first solve, refine this many times the "
                       "cells near the potential contact zone only: the part "
                       "of the contact boundary (Contact > Contact boundary "
-                      "id) whose initial gap is at most 'Contact band gap', "
-                      "and the cells within 'Contact band width' of it.");
+                      "id; with Type = pairs each pair's contact boundary, "
+                      "with its own gap) whose initial gap is at most "
+                      "'Contact band gap', and the cells within 'Contact "
+                      "band width' of it.");
     prm.declare_entry("Contact band width",
                       "0",
                       Patterns::Double(0.),
@@ -218,10 +220,11 @@ namespace Signorini
 
     template <int dim>
     void
-    refine_contact_band(parallel::distributed::Triangulation<dim> &triangulation,
-                        const types::boundary_id                    contact_id,
-                        const RefinementParameters                 &parameters,
-                        const std::function<double(const Point<dim> &)> &gap)
+    refine_contact_band(
+      parallel::distributed::Triangulation<dim> &triangulation,
+      const std::vector<std::pair<types::boundary_id, std::function<double(const Point<dim> &)>>>
+                                 &surfaces,
+      const RefinementParameters &parameters)
     {
       const MPI_Comm comm = triangulation.get_communicator();
       for (unsigned int round = 0; round < parameters.band_refinements; ++round)
@@ -231,14 +234,15 @@ namespace Signorini
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned())
               for (const auto f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    cell->face(f)->boundary_id() == contact_id)
-                  for (const auto v : cell->face(f)->vertex_indices())
-                    {
-                      const Point<dim> &X = cell->face(f)->vertex(v);
-                      if (parameters.band_gap < 0. || gap(X) <= parameters.band_gap)
-                        local.push_back(X);
-                    }
+                for (const auto &[contact_id, gap] : surfaces)
+                  if (cell->face(f)->at_boundary() &&
+                      cell->face(f)->boundary_id() == contact_id)
+                    for (const auto v : cell->face(f)->vertex_indices())
+                      {
+                        const Point<dim> &X = cell->face(f)->vertex(v);
+                        if (parameters.band_gap < 0. || gap(X) <= parameters.band_gap)
+                          local.push_back(X);
+                      }
           const std::vector<Point<dim>> zone = all_points(comm, local);
           if (zone.empty())
             return;
@@ -489,15 +493,15 @@ namespace Signorini
     }
 
     template void
-    refine_contact_band<2>(parallel::distributed::Triangulation<2> &,
-                           const types::boundary_id,
-                           const RefinementParameters &,
-                           const std::function<double(const Point<2> &)> &);
+    refine_contact_band<2>(
+      parallel::distributed::Triangulation<2> &,
+      const std::vector<std::pair<types::boundary_id, std::function<double(const Point<2> &)>>> &,
+      const RefinementParameters &);
     template void
-    refine_contact_band<3>(parallel::distributed::Triangulation<3> &,
-                           const types::boundary_id,
-                           const RefinementParameters &,
-                           const std::function<double(const Point<3> &)> &);
+    refine_contact_band<3>(
+      parallel::distributed::Triangulation<3> &,
+      const std::vector<std::pair<types::boundary_id, std::function<double(const Point<3> &)>>> &,
+      const RefinementParameters &);
     template std::vector<CellId::binary_type>
     coarsen_once<2>(parallel::distributed::Triangulation<2> &);
     template std::vector<CellId::binary_type>

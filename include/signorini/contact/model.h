@@ -153,6 +153,24 @@ namespace Signorini
       virtual std::function<double(const Point<dim> &)>
       band_distance() const = 0;
 
+      /// A contact boundary of the band refinement and its distance.
+      struct BandSurface
+      {
+        types::boundary_id                        id;
+        std::function<double(const Point<dim> &)> distance;
+      };
+
+      /**
+       * The surfaces the band refinement starts from: each contact boundary
+       * with its own band_distance() (collective). Default: the one contact
+       * boundary; with pairs, each pair's contact boundary.
+       */
+      virtual std::vector<BandSurface>
+      band_surfaces() const
+      {
+        return {{this->contact_boundary_id(), band_distance()}};
+      }
+
       /// The model's node-wise constraints, if its registry entry declares
       /// them (Capabilities::node_wise_constraints), else none.
       virtual const NodeWiseConstraints<dim> *

@@ -106,6 +106,11 @@ namespace Signorini
       std::function<double(const Point<dim> &)>
       band_distance() const override;
 
+      /// Each part's contact boundary with that part's distance (a
+      /// boundary that is one pair's target is no band start of its own).
+      std::vector<typename Model<dim>::BandSurface>
+      band_surfaces() const override;
+
       double
       add_penalty(const VectorType                &u,
                   const double                     mu,

@@ -25,17 +25,18 @@ namespace Signorini
   {
     /**
      * Refine, @p parameters.band_refinements times, the cells within
-     * band_width of the part of the contact boundary @p contact_id whose
-     * initial gap (@p gap, a function of the reference position) is at
-     * most band_gap (all of it if band_gap < 0): the potential contact
-     * zone. Independent of the partition (collective).
+     * band_width of the part of each contact boundary of @p surfaces
+     * (boundary id and initial gap, a function of the reference position)
+     * whose gap is at most band_gap (all of it if band_gap < 0): the
+     * potential contact zones. Independent of the partition (collective).
      */
     template <int dim>
     void
-    refine_contact_band(parallel::distributed::Triangulation<dim> &triangulation,
-                        const types::boundary_id                    contact_id,
-                        const RefinementParameters                 &parameters,
-                        const std::function<double(const Point<dim> &)> &gap);
+    refine_contact_band(
+      parallel::distributed::Triangulation<dim> &triangulation,
+      const std::vector<std::pair<types::boundary_id, std::function<double(const Point<dim> &)>>>
+                                 &surfaces,
+      const RefinementParameters &parameters);
 
     /**
      * Coarsen every cell once where its siblings allow (all of them
