@@ -449,21 +449,6 @@ namespace Signorini
     }
 
     template <int dim>
-    std::function<double(const Point<dim> &)>
-    MultiContact<dim>::band_distance() const
-    {
-      std::vector<std::function<double(const Point<dim> &)>> distances;
-      for (const Part &p : parts)
-        distances.push_back(p.model->band_distance());
-      return [distances](const Point<dim> &X) {
-        double d = std::numeric_limits<double>::max();
-        for (const auto &distance : distances)
-          d = std::min(d, distance(X));
-        return d;
-      };
-    }
-
-    template <int dim>
     std::vector<typename Model<dim>::BandSurface>
     MultiContact<dim>::band_surfaces() const
     {

@@ -70,11 +70,9 @@ namespace Signorini
           throw InputError("Mesh refinement > Contact band refinements",
                            "refines near the contact boundary, but the scene "
                            "declares no contact (Contact > Type)");
-        std::vector<std::pair<types::boundary_id, std::function<double(const Point<dim> &)>>>
-          surfaces;
-        for (const auto &surface : contact->band_surfaces())
-          surfaces.emplace_back(surface.id, surface.distance);
-        Refinement::refine_contact_band(scene->triangulation, surfaces, refinement);
+        Refinement::refine_contact_band(scene->triangulation,
+                                        contact->band_surfaces(),
+                                        refinement);
       }
     if (refinement.coarser_mesh_estimate && mesh_as_built)
       {

@@ -235,8 +235,7 @@ namespace Signorini
             if (cell->is_locally_owned())
               for (const auto f : cell->face_indices())
                 for (const auto &[contact_id, gap] : surfaces)
-                  if (cell->face(f)->at_boundary() &&
-                      cell->face(f)->boundary_id() == contact_id)
+                  if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == contact_id)
                     for (const auto v : cell->face(f)->vertex_indices())
                       {
                         const Point<dim> &X = cell->face(f)->vertex(v);

@@ -144,32 +144,20 @@ namespace Signorini
       virtual double
       initial_penalty(const double c0_E) const = 0;
 
-      /**
-       * A distance (>= 0 outside, any sign inside) of a point of the
-       * reference configuration from where contact can happen, for the
-       * band refinement of Gamma_C before the DoFs exist (collective when
-       * called: it may gather from every rank).
-       */
-      virtual std::function<double(const Point<dim> &)>
-      band_distance() const = 0;
-
-      /// A contact boundary of the band refinement and its distance.
-      struct BandSurface
-      {
-        types::boundary_id                        id;
-        std::function<double(const Point<dim> &)> distance;
-      };
+      /// A contact boundary and a distance (>= 0 outside, any sign
+      /// inside) of a point of the reference configuration from where
+      /// contact can happen on it.
+      using BandSurface =
+        std::pair<types::boundary_id, std::function<double(const Point<dim> &)>>;
 
       /**
-       * The surfaces the band refinement starts from: each contact boundary
-       * with its own band_distance() (collective). Default: the one contact
-       * boundary; with pairs, each pair's contact boundary.
+       * The surfaces the band refinement of Gamma_C starts from, before the
+       * DoFs exist: the contact boundary with its distance; with pairs each
+       * pair's (collective when called: a distance may gather from every
+       * rank).
        */
       virtual std::vector<BandSurface>
-      band_surfaces() const
-      {
-        return {{this->contact_boundary_id(), band_distance()}};
-      }
+      band_surfaces() const = 0;
 
       /// The model's node-wise constraints, if its registry entry declares
       /// them (Capabilities::node_wise_constraints), else none.

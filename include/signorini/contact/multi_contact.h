@@ -102,10 +102,6 @@ namespace Signorini
       double
       initial_penalty(const double c0_E) const override;
 
-      /// The nearest of the parts' distances (collective).
-      std::function<double(const Point<dim> &)>
-      band_distance() const override;
-
       /// Each part's contact boundary with that part's distance (a
       /// boundary that is one pair's target is no band start of its own).
       std::vector<typename Model<dim>::BandSurface>

@@ -104,13 +104,14 @@ namespace Signorini
         return c0_E / std::pow(min_mesh_size(), 2);
       }
 
-      /// The gap x_d - psi(x') in the reference configuration.
-      std::function<double(const Point<dim> &)>
-      band_distance() const override
+      /// The contact boundary, with the gap x_d - psi(x') in the reference
+      /// configuration.
+      std::vector<typename Model<dim>::BandSurface>
+      band_surfaces() const override
       {
-        return [this](const Point<dim> &X) {
-          return X[dim - 1] - surface->evaluate(X).psi;
-        };
+        return {{this->contact_boundary_id(), [this](const Point<dim> &X) {
+                   return X[dim - 1] - surface->evaluate(X).psi;
+                 }}};
       }
 
       State

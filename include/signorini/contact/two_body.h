@@ -153,10 +153,17 @@ namespace Signorini
         return c0_E * min_face_size;
       }
 
+      /// The contact boundary, with band_distance().
+      std::vector<typename Model<dim>::BandSurface>
+      band_surfaces() const override
+      {
+        return {{contact_boundary, band_distance()}};
+      }
+
       /// Distance to the bounding box of the cells of body 2 (the cells
       /// on the target boundary's side; collective).
       std::function<double(const Point<dim> &)>
-      band_distance() const override;
+      band_distance() const;
 
       /// Over the nodes and, for the integral form, the Gauss points.
       double

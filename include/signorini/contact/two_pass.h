@@ -104,10 +104,10 @@ namespace Signorini
         return std::min(first.initial_penalty(c0_E), second.initial_penalty(c0_E));
       }
 
-      std::function<double(const Point<dim> &)>
-      band_distance() const override
+      std::vector<typename Model<dim>::BandSurface>
+      band_surfaces() const override
       {
-        return first.band_distance();
+        return first.band_surfaces();
       }
 
       double
