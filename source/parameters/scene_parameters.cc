@@ -510,26 +510,6 @@ namespace Signorini
       return (1. - nu * nu) / E;
     }
 
-    namespace
-    {
-      /// The boundary ids a 'Boundary conditions' list names: the text
-      /// before ':' of each comma-separated entry ('1: x, 3: y' or '2, 12').
-      std::set<types::boundary_id>
-      listed_boundary_ids(const std::string &list)
-      {
-        std::set<types::boundary_id> ids;
-        for (const auto &entry : Utilities::split_string_list(list))
-          {
-            const std::string id = Utilities::trim(entry.substr(0, entry.find(':')));
-            char             *end = nullptr;
-            const long        value = std::strtol(id.c_str(), &end, 10);
-            if (!id.empty() && *end == '\0' && value >= 0 && value <= 255)
-              ids.insert(static_cast<types::boundary_id>(value));
-          }
-        return ids;
-      }
-    } // namespace
-
     void
     Scene::add_free_surface_pair(Signorini::Contact::PairsParameters &pairs) const
     {
@@ -544,12 +524,7 @@ namespace Signorini
                                 "name them, or set 'Two-body pairs' to a list "
                                 "of pairs or to none");
         }
-      std::set<types::boundary_id> conditions;
-      for (const auto *list : {&boundary_conditions.fixed_boundaries,
-                               &boundary_conditions.prescribed_boundaries,
-                               &boundary_conditions.traction_boundaries})
-        for (const auto id : listed_boundary_ids(*list))
-          conditions.insert(id);
+      const std::set<types::boundary_id> conditions = boundary_conditions.condition_ids();
       std::vector<types::boundary_id> free;
       unsigned int                    bodies_with_free = 0;
       for (const auto &body : bodies)

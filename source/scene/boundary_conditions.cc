@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -223,6 +224,23 @@ namespace Signorini
     traction_boundaries     = prm.get("Traction boundaries");
     traction                = prm.get("Traction");
     body_force              = prm.get("Body force");
+  }
+
+  std::set<types::boundary_id>
+  BoundaryConditionParameters::condition_ids() const
+  {
+    std::set<types::boundary_id> ids;
+    for (const auto *list : {&fixed_boundaries, &prescribed_boundaries, &traction_boundaries})
+      for (const auto &entry : Utilities::split_string_list(*list))
+        {
+          // '1: x' (fixed, prescribed) or '2' (traction).
+          const std::string id    = Utilities::trim(entry.substr(0, entry.find(':')));
+          char             *end   = nullptr;
+          const long        value = std::strtol(id.c_str(), &end, 10);
+          if (!id.empty() && *end == '\0' && value >= 0 && value <= 255)
+            ids.insert(static_cast<types::boundary_id>(value));
+        }
+    return ids;
   }
 
   template <int dim>

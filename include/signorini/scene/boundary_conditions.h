@@ -39,6 +39,13 @@ namespace Signorini
 
     void
     parse_parameters(ParameterHandler &prm);
+
+    /// The boundary ids that carry a condition: the ids of 'Fixed
+    /// boundaries', 'Prescribed boundaries' and 'Traction boundaries'
+    /// (an entry that is no id is left to BoundaryConditions::setup()'s
+    /// error).
+    std::set<types::boundary_id>
+    condition_ids() const;
   };
 
   template <int dim>
