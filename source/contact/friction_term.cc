@@ -124,6 +124,7 @@ namespace Signorini
       history_times.clear();
       mixing.clear();
       last_change = 0.;
+      scale       = 0.;
       started     = false;
     }
 
@@ -151,6 +152,17 @@ namespace Signorini
         c.components[d] = d;
       c.factors.assign(dim, 1.);
       add_partner_coupling(k, c);
+    }
+
+    template <int dim>
+    void
+    NodeFriction<dim>::refresh_scale()
+    {
+      double sum = 0.;
+      for (const double l : lambda)
+        sum += l * l;
+      const double mu = this->parameters.coefficient;
+      scale = mu * std::sqrt(Utilities::MPI::sum(sum, this->boundary().get_communicator()));
     }
 
     template <int dim>
@@ -193,6 +205,7 @@ namespace Signorini
           for (unsigned int k = 0; k < lambda.size(); ++k)
             lambda[k] = std::max(0., history[1][k] + slope * (history[1][k] - history[0][k]));
         }
+      refresh_scale();
     }
 
     template <int dim>
@@ -283,6 +296,14 @@ namespace Signorini
           change  = std::max(change, std::abs(lambda[k] - old[k]));
           largest = std::max(largest, lambda[k]);
         }
+      // The scale of the change: the largest normal force now or at the
+      // last converged step. On its own the present largest vanishes with
+      // the contact (unloading to zero force), and a change at the
+      // interior point method's noise level would read as a relative
+      // change of order 1 and never settle.
+      if (!history.empty())
+        for (const double l : history.back())
+          largest = std::max(largest, l);
       const MPI_Comm comm = this->boundary().get_communicator();
       change              = Utilities::MPI::max(change, comm);
       largest             = Utilities::MPI::max(largest, comm);
@@ -305,6 +326,7 @@ namespace Signorini
             lambda = mixing.next(old, lambda);
         }
       last_change = relative;
+      refresh_scale();
       return relative;
     }
 
@@ -414,6 +436,7 @@ namespace Signorini
       if (!friction || !e.admissible)
         return e;
       e.value += friction->add(u, constraints, rhs, hessian);
+      e.force_scale = std::hypot(e.force_scale, friction->force_scale());
       if (!std::isfinite(e.value))
         e.admissible = false;
       return e;

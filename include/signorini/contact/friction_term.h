@@ -79,11 +79,23 @@ namespace Signorini
       /**
        * Re-lag lambda and T from the model's force record at the ghosted
        * state @p u (after a converged solve). Returns the relative change
-       * of the normal forces, max_p |lambda_new - lambda_old| / max_p
-       * lambda_new (0 if no point carries a force; collective).
+       * of the normal forces, max_p |lambda_new - lambda_old| over the
+       * largest normal force now or at the last converged step (0 if no
+       * point carries a force; collective).
        */
       virtual double
       update(const VectorType &u) = 0;
+
+      /**
+       * The friction forces that the lagged normal forces allow,
+       * (sum_p (mu lambda_p)^2)^(1/2), summed over the ranks when lambda
+       * last changed. FrictionObjective adds it to the energy's force
+       * scale: the solvers' tolerances are relative to that scale, and
+       * near the end of an unloading the elastic forces vanish while the
+       * friction forces of the lag still act.
+       */
+      virtual double
+      force_scale() const = 0;
 
       /// The friction state of one contact point, for output.
       struct PointSample
@@ -194,6 +206,12 @@ namespace Signorini
       double
       update(const VectorType &u) override;
 
+      double
+      force_scale() const override
+      {
+        return scale;
+      }
+
       std::vector<typename FrictionTerm<dim>::PointSample>
       point_samples(const VectorType &u) const override;
 
@@ -280,6 +298,10 @@ namespace Signorini
       void
       lag_all(const VectorType &u);
 
+      /// force_scale() of the present lambda (collective).
+      void
+      refresh_scale();
+
       /// The relative increment du_k of every node at the ghosted @p u:
       /// its own since the step's start, minus its partner's (has[k]:
       /// whether it has one; collective).
@@ -294,6 +316,7 @@ namespace Signorini
       std::vector<double>              lambda;
       AndersonMixing                   mixing; // of lambda over the outer loop
       double                           last_change = 0.; // update()'s last
+      double                           scale       = 0.; // force_scale()
       // The lagged forces of the last two converged steps and their load
       // times (oldest first), for start_step()'s extrapolation.
       std::vector<std::vector<double>> history;
