@@ -1,6 +1,7 @@
 #include <signorini/problem/incompressibility.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
 namespace Signorini
@@ -32,49 +33,55 @@ namespace Signorini
   {
     fe_values.reinit(cell);
     const FEValuesExtractors::Vector displacement(0);
+    const FiniteElement<dim>        &fe     = fe_values.get_fe();
     const unsigned int               n_dofs = fe_values.dofs_per_cell;
     std::vector<Tensor<2, dim>>      grad_u(fe_values.n_quadrature_points);
     fe_values[displacement].get_function_gradients(u, grad_u);
     if (gradient)
-      {
-        gradient->reinit(n_dofs);
-      }
+      gradient->reinit(n_dofs);
     if (hessian)
-      {
-        hessian->reinit(n_dofs, n_dofs);
-      }
+      hessian->reinit(n_dofs, n_dofs);
+    // Each shape function is primitive: A_i = e_c(i) (x) Grad phi_i, so
+    // with G_i = F^-T Grad phi_i (the spatial gradient of phi_i),
+    //   tr(F^-1 A_i)           = G_i[c(i)],
+    //   tr(F^-1 A_j F^-1 A_i)  = G_i[c(j)] G_j[c(i)],
+    // two products per pair instead of a tensor product.
+    std::vector<unsigned int> component(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      component[i] = fe.system_to_component_index(i).first;
     double                      value = 0.;
-    std::vector<double>         trace_i(n_dofs);
-    std::vector<Tensor<2, dim>> FinvA(n_dofs);
+    std::vector<Tensor<1, dim>> G(n_dofs);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        const Tensor<2, dim> F    = unit_symmetric_tensor<dim>() + grad_u[q];
-        const double         J    = determinant(F);
-        const double         JxW  = fe_values.JxW(q);
+        const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + grad_u[q];
+        const double         J   = determinant(F);
+        const double         JxW = fe_values.JxW(q);
         value += (J - 1.) * JxW;
         if (!gradient && !hessian)
           continue;
-        const Tensor<2, dim> Finv = invert(F);
+        const Tensor<2, dim> Finv_T = transpose(invert(F));
         for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            FinvA[i]   = Finv * fe_values[displacement].gradient(i, q);
-            trace_i[i] = trace(FinvA[i]);
-          }
+          G[i] = Finv_T * fe_values.shape_grad(i, q);
         if (gradient)
           for (unsigned int i = 0; i < n_dofs; ++i)
-            (*gradient)(i) += J * trace_i[i] * JxW;
+            (*gradient)(i) += J * G[i][component[i]] * JxW;
         if (hessian)
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            for (unsigned int j = 0; j <= i; ++j)
+          {
+            const double w = factor * J * JxW;
+            for (unsigned int i = 0; i < n_dofs; ++i)
               {
-                const double h =
-                  factor * J *
-                  (trace_i[i] * trace_i[j] - scalar_product(FinvA[j], transpose(FinvA[i]))) *
-                  JxW;
-                (*hessian)(i, j) += h;
-                if (j != i)
-                  (*hessian)(j, i) += h;
+                const unsigned int ci  = component[i];
+                const double       tri = G[i][ci];
+                for (unsigned int j = 0; j <= i; ++j)
+                  {
+                    const unsigned int cj = component[j];
+                    const double h = w * (tri * G[j][cj] - G[i][cj] * G[j][ci]);
+                    (*hessian)(i, j) += h;
+                    if (j != i)
+                      (*hessian)(j, i) += h;
+                  }
               }
+          }
       }
     return value;
   }
