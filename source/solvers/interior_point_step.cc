@@ -72,6 +72,8 @@ namespace Signorini
     // penetration this causes, the iteration removes it.
     const AffineConstraints<double> target = scene.boundary_constraints(time, false);
     target.distribute(scene.solution);
+    // The state a re-solve after a large change of the lag starts from.
+    const VectorType start = scene.solution;
     EnergyObjective<dim> energy(*this->problem.energy, time);
     // With friction: E + sum D_p, the lagged dissipation potential.
     Contact::FrictionObjective<dim> objective(energy, this->problem.friction.get());
@@ -102,6 +104,8 @@ namespace Signorini
           {
             if (update > 0 && friction && change <= small_friction_change)
               minimizer.restart_barrier(friction_restart_barrier);
+            if (update > 0 && friction && change > this->friction_restart_change)
+              scene.solution = start;
             IncompressibilityLagrangian<dim> lagrangian(objective, *incompressibility, y, rho);
             stats = minimizer.minimize(lagrangian, scene.homogeneous_constraints,
                                        scene.solution, scene.solution_ghosted,

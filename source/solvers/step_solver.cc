@@ -292,13 +292,19 @@ namespace Signorini
       to.linear_fallbacks += from.linear_fallbacks;
       to.linear_failures += from.linear_failures;
     };
-    StepStatistics earlier; // the counts of the outer iterations before
+    StepStatistics   earlier;    // the counts of the outer iterations before
+    const VectorType step_start = scene.solution;
     for (unsigned int m = 0;; ++m)
       {
         stats = StepStatistics();
+        // After a large change of the lag: from the step's start, with
+        // its predictor, as the first solve.
+        const bool restart = m > 0 && record.friction_change > friction_restart_change;
+        if (restart)
+          scene.solution = step_start;
         if (m > 0)
           prepare_friction_resolve(record.friction_change);
-        friction_resolve           = m > 0;
+        friction_resolve           = m > 0 && !restart;
         const bool ok              = solve(time, stats, record);
         friction_resolve           = false;
         record.friction_iterations = m + 1;

@@ -181,6 +181,18 @@ namespace Signorini
     std::string
     friction_failure(const double change, const unsigned int iterations) const;
 
+    /**
+     * A re-solve of the friction loop whose lagged normal forces changed
+     * by more than this (relative) starts from the step's start, as the
+     * first solve did, not from the last solve: that solve's slips were
+     * those of other normal forces (none at all after a frictionless first
+     * solve, or a lag extrapolated past the end of the pressing), and
+     * pulling the nodes that now stick back from them took the interior
+     * point method 19-24 iterations of short steps (cattaneo_mindlin_2d's
+     * pressing steps), 6-10 from the step's start.
+     */
+    static constexpr double friction_restart_change = 0.1;
+
     /// True during the re-solves of the friction loop: they start from a
     /// converged state at the step's load time, so predict() does
     /// nothing (its tangent step would only perturb that state by up to
