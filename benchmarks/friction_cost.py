@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""What Coulomb friction costs (issue 50): the Cattaneo-Mindlin scene with
-friction (P, then Q in one step, and as committed in six) against the same
-mesh frictionless with P only (the issue's yardstick: at most 2x), and the
+"""What Coulomb friction costs (issue 50): the Cattaneo-Mindlin scenes (2D
+and 3D) with friction (P, then Q in one step, and as committed) against the
+same mesh frictionless with P only (the issue's yardstick: at most 2x), and the
 sliding block with
 friction against the same path frictionless. The two runs of a pair
 alternate, --runs times each; the table gives the medians of the whole
@@ -34,6 +34,13 @@ P_ONLY = {"Contact/Friction": {"Coefficient": 0},
           "Contact/Friction/Mindlin reference": {"Active": "false"},
           "Load stepping": {"End time": 1, "Number of steps": 2}}
 REFINED = {"Mesh": {"Local refinements": 6}}
+# 3D: the quarter ball pressed over 0 <= t <= 2 in two steps, then
+# Q/(mu P) = 0.75 in one (the scene's dq is the ratio per unit time).
+ONE_Q_STEP_3D = {"Boundary conditions": {"Function constants": "muP=0.09696, dq=0.75"},
+                 "Load stepping": {"End time": 3, "Number of steps": 3}}
+P_ONLY_3D = {"Contact/Friction": {"Coefficient": 0},
+             "Contact/Friction/Mindlin reference": {"Active": "false"},
+             "Load stepping": {"End time": 2, "Number of steps": 2}}
 
 PAIRS = [
     ("Cattaneo-Mindlin 2D: P in 2 steps, Q/(mu P) = 0.75 in 1 / frictionless P only",
@@ -44,6 +51,10 @@ PAIRS = [
      "cattaneo_mindlin_2d.prm",
      {}, P_ONLY),
     ("the same refined once", "cattaneo_mindlin_2d.prm", REFINED, {**P_ONLY, **REFINED}),
+    ("Cattaneo-Mindlin 3D: P in 2 steps, Q/(mu P) = 0.75 in 1 / frictionless P only",
+     "cattaneo_mindlin_3d.prm", ONE_Q_STEP_3D, P_ONLY_3D),
+    ("Cattaneo-Mindlin 3D as committed (P in 2 steps, Q in 3) / frictionless P only",
+     "cattaneo_mindlin_3d.prm", {}, P_ONLY_3D),
     ("sliding block mu = 0.3 / the same path frictionless",
      "sliding_block.prm", {}, {"Contact/Friction": {"Coefficient": 0}}),
 ]
