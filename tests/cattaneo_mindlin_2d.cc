@@ -18,6 +18,7 @@
 // - the outer loop ends below 1e-6 within 10 iterations in every step.
 // Only verdicts are printed.
 
+#include "mindlin_steps.h"
 #include "run_output.h"
 
 #include <algorithm>
@@ -59,18 +60,11 @@ namespace
     r.a  = RunOutput::summary_quantity(summary, "hertz_a", "reference");
     r.h  = summary_number(summary, "min mesh size");
     r.l2 = RunOutput::summary_quantity(summary, "friction_traction_l2_error");
-    for (const auto &s : read_csv(name + "/load_steps.csv"))
-      {
-        r.settled = r.settled && s.at("friction_iterations") <= 10 &&
-                    s.at("friction_change") <= 1e-6;
-        for (const double t : {2., 3., 4.})
-          if (std::abs(s.at("time") - t) < 1e-9)
-            {
-              r.ratio.push_back(s.at("tangential_load_ratio"));
-              r.c_over_a.push_back(s.at("stick_radius") / r.a);
-              r.reference_c_over_a.push_back(s.at("stick_radius_reference") / r.a);
-            }
-      }
+    const auto steps = MindlinSteps::read(name + "/load_steps.csv", r.a, {2., 3., 4.});
+    r.settled            = steps.settled;
+    r.ratio              = steps.ratio;
+    r.c_over_a           = steps.c_over_a;
+    r.reference_c_over_a = steps.reference_c_over_a;
     std::cerr << name << ": a " << r.a << " h " << r.h << " L2 " << r.l2 << "\n";
     for (unsigned int i = 0; i < r.ratio.size(); ++i)
       std::cerr << "  Q/(mu P) " << r.ratio[i] << " c/a " << r.c_over_a[i] << " Mindlin "

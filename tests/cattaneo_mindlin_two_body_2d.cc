@@ -46,6 +46,7 @@
 //   at both slip lengths.
 // Only verdicts are printed.
 
+#include "mindlin_steps.h"
 #include "run_output.h"
 
 #include <algorithm>
@@ -81,29 +82,19 @@ namespace
     r.a           = RunOutput::summary_quantity(summary, "hertz_a", "reference");
     r.P_reference = RunOutput::summary_quantity(summary, "contact_force_y", "reference");
     // The half disk's contact node spacing inside the contact zone.
-    std::vector<double> x;
-    for (const auto &p : read_csv(name + "/contact_profile.csv"))
-      if (std::abs(p.at("Xx")) < r.a && p.at("Xy") < 0.5)
-        x.push_back(p.at("Xx"));
-    std::sort(x.begin(), x.end());
-    for (unsigned int i = 1; i < x.size(); ++i)
-      r.h = std::max(r.h, x[i] - x[i - 1]);
-    for (const auto &s : read_csv(name + "/load_steps.csv"))
+    r.h              = MindlinSteps::node_spacing(name + "/contact_profile.csv", r.a);
+    const auto steps = MindlinSteps::read(name + "/load_steps.csv", r.a, {2., 3., 4.});
+    r.settled            = steps.settled;
+    r.ratio              = steps.ratio;
+    r.c_over_a           = steps.c_over_a;
+    r.reference_c_over_a = steps.reference_c_over_a;
+    for (const auto &s : steps.rows)
       {
-        r.settled = r.settled && s.at("friction_iterations") <= 10 &&
-                    s.at("friction_change") <= 1e-6;
-        for (const double t : {2., 3., 4.})
-          if (std::abs(s.at("time") - t) < 1e-9)
-            {
-              r.ratio.push_back(s.at("tangential_load_ratio"));
-              r.c_over_a.push_back(s.at("stick_radius") / r.a);
-              r.reference_c_over_a.push_back(s.at("stick_radius_reference") / r.a);
-              // The scene's dead traction on the 2-wide top: (t - 1)/4 mu P.
-              r.applied_Q.push_back(0.25 * (t - 1.) * mu * r.P_reference);
-              r.friction_x.push_back(s.at("friction_force_x"));
-              r.contact_x.push_back(s.at("contact_force_x"));
-              r.normal_force.push_back(s.at("contact_force_y"));
-            }
+        // The scene's dead traction on the 2-wide top: (t - 1)/4 mu P.
+        r.applied_Q.push_back(0.25 * (s.at("time") - 1.) * mu * r.P_reference);
+        r.friction_x.push_back(s.at("friction_force_x"));
+        r.contact_x.push_back(s.at("contact_force_x"));
+        r.normal_force.push_back(s.at("contact_force_y"));
       }
     std::cerr << name << ": a " << r.a << " h " << r.h << "\n";
     for (unsigned int i = 0; i < r.ratio.size(); ++i)

@@ -11,6 +11,7 @@
 // status moves c/a by more than 0.02 (tests/cattaneo_mindlin_two_body_2d).
 // Only verdicts are printed.
 
+#include "mindlin_steps.h"
 #include "run_output.h"
 
 #include <algorithm>
@@ -38,24 +39,11 @@ namespace
     Run r;
     r.ok = RunOutput::run_scene(name, "cattaneo_mindlin_two_body_2d.prm", edits) == 0;
     r.a  = RunOutput::summary_quantity(name + "/summary.json", "hertz_a", "reference");
-    std::vector<double> x; // the half disk's contact nodes inside the contact zone
-    for (const auto &p : read_csv(name + "/contact_profile.csv"))
-      if (std::abs(p.at("Xx")) < r.a && p.at("Xy") < 0.5)
-        x.push_back(p.at("Xx"));
-    std::sort(x.begin(), x.end());
-    for (unsigned int i = 1; i < x.size(); ++i)
-      r.h = std::max(r.h, x[i] - x[i - 1]);
-    for (const auto &s : read_csv(name + "/load_steps.csv"))
-      {
-        r.settled = r.settled && s.at("friction_iterations") <= 10 &&
-                    s.at("friction_change") <= 1e-6;
-        for (const double t : {2., 3., 4.})
-          if (std::abs(s.at("time") - t) < 1e-9)
-            {
-              r.ratio.push_back(s.at("tangential_load_ratio"));
-              r.c_over_a.push_back(s.at("stick_radius") / r.a);
-            }
-      }
+    r.h              = MindlinSteps::node_spacing(name + "/contact_profile.csv", r.a);
+    const auto steps = MindlinSteps::read(name + "/load_steps.csv", r.a, {2., 3., 4.});
+    r.settled        = steps.settled;
+    r.ratio          = steps.ratio;
+    r.c_over_a       = steps.c_over_a;
     std::cerr << name << ": h/a " << r.h / r.a << "\n";
     for (unsigned int i = 0; i < r.ratio.size(); ++i)
       std::cerr << "  Q/(mu P) " << r.ratio[i] << " c/a " << r.c_over_a[i] << "\n";

@@ -299,7 +299,8 @@ namespace Signorini
         stats = StepStatistics();
         // After a large change of the lag: from the step's start, with
         // its predictor, as the first solve.
-        const bool restart = m > 0 && record.friction_change > friction_restart_change;
+        const bool restart =
+          m > 0 && restarts_friction() && record.friction_change > friction_restart_change;
         if (restart)
           scene.solution = step_start;
         if (m > 0)

@@ -53,6 +53,12 @@ namespace Signorini
       return this->problem.incompressibility != nullptr;
     }
 
+    bool
+    restarts_friction() const override
+    {
+      return true;
+    }
+
   protected:
     /// The friction loop's re-solve starts from a converged state: the
     /// barrier starts small (InteriorPointMinimizer::restart_barrier()).

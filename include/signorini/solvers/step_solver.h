@@ -100,6 +100,18 @@ namespace Signorini
       return false;
     }
 
+    /// Whether a re-solve after a large change of the lag starts from the
+    /// step's start (friction_restart_change). The interior point method
+    /// only: newton-penalty's re-solve from the step's start runs its
+    /// penalty path again, and cattaneo_mindlin_two_body_2d with the slip
+    /// length 1e-6 h then failed its pressing (cuts below the minimum
+    /// step); from the last solve it converges.
+    virtual bool
+    restarts_friction() const
+    {
+      return false;
+    }
+
     /// "newton", "ipopt" or "interior_point": the name of the iteration
     /// counts in the output.
     virtual std::string
@@ -183,7 +195,8 @@ namespace Signorini
 
     /**
      * A re-solve of the friction loop whose lagged normal forces changed
-     * by more than this (relative) starts from the step's start, as the
+     * by more than this (relative) starts from the step's start (with
+     * restarts_friction()), as the
      * first solve did, not from the last solve: that solve's slips were
      * those of other normal forces (none at all after a frictionless first
      * solve, or a lag extrapolated past the end of the pressing), and
