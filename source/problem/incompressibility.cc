@@ -48,7 +48,12 @@ namespace Signorini
     // two products per pair instead of a tensor product.
     std::vector<unsigned int> component(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      component[i] = fe.system_to_component_index(i).first;
+      {
+        component[i] = fe.system_to_component_index(i).first;
+        AssertThrow(component[i] < dim,
+                    ExcMessage("Incompressibility: the element must have the "
+                               "displacement components only"));
+      }
     double                      value = 0.;
     std::vector<Tensor<1, dim>> G(n_dofs);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
