@@ -72,8 +72,6 @@ namespace Signorini
     // penetration this causes, the iteration removes it.
     const AffineConstraints<double> target = scene.boundary_constraints(time, false);
     target.distribute(scene.solution);
-    // The state a re-solve after a large change of the lag starts from.
-    const VectorType start = scene.solution;
     EnergyObjective<dim> energy(*this->problem.energy, time);
     // With friction: E + sum D_p, the lagged dissipation potential.
     Contact::FrictionObjective<dim> objective(energy, this->problem.friction.get());
@@ -97,6 +95,9 @@ namespace Signorini
           friction ? std::max(p.max_multiplier_updates,
                               friction->friction_parameters().max_outer_iterations) :
                      p.max_multiplier_updates;
+        // The state a re-solve after a large change of the lag starts
+        // from (friction only).
+        const VectorType start = friction ? scene.solution : VectorType();
         unsigned int   iterations = 0;
         std::vector<double> c(cells.size(), 0.);
         double change = 1.;

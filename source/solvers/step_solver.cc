@@ -293,7 +293,7 @@ namespace Signorini
       to.linear_failures += from.linear_failures;
     };
     StepStatistics   earlier;    // the counts of the outer iterations before
-    const VectorType step_start = scene.solution;
+    const VectorType step_start = restarts_friction() ? scene.solution : VectorType();
     for (unsigned int m = 0;; ++m)
       {
         stats = StepStatistics();

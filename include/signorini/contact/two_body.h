@@ -160,11 +160,6 @@ namespace Signorini
         return {{contact_boundary, band_distance()}};
       }
 
-      /// Distance to the bounding box of the cells of body 2 (the cells
-      /// on the target boundary's side; collective).
-      std::function<double(const Point<dim> &)>
-      band_distance() const;
-
       /// Over the nodes and, for the integral form, the Gauss points.
       double
       max_penetration_ratio(const VectorType &u) const override
@@ -490,6 +485,11 @@ namespace Signorini
       assembly_constraints(const AffineConstraints<double> &constraints) const;
 
     private:
+      /// Distance to the bounding box of the cells of body 2 (the cells
+      /// on the target boundary's side; collective).
+      std::function<double(const Point<dim> &)>
+      band_distance() const;
+
       /// Body 2's vertex normals for the faces @p faces, keyed by the
       /// vertex's first DoF: the faces' outward normals (away from the
       /// opposite face) at their centres, weighted by the faces' sizes and
