@@ -36,7 +36,9 @@ namespace Signorini
                       "above 'Tolerance'): the best iterate so far is kept "
                       "as converged if its residuals are all at most this "
                       "(like Ipopt's acceptable_tol), else the iteration "
-                      "goes on; 0: never.");
+                      "goes on. The same iterate is kept when the line "
+                      "search finds no decrease (else the step fails); "
+                      "0: never.");
     prm.declare_entry("Maximum increment",
                       "0.1",
                       Patterns::Double(0.),
@@ -327,7 +329,12 @@ namespace Signorini
           return ip.statistics();
         if (ip.below_increment_tolerance(r))
           return ip.finish(r.mu_average);
-        if (!ip.line_search() || !ip.accept())
+        if (!ip.line_search())
+          {
+            ip.take_best("no decrease along the step", "line search failed", it);
+            return ip.statistics();
+          }
+        if (!ip.accept())
           return ip.statistics();
       }
   }

@@ -288,12 +288,21 @@ namespace Signorini
         progress_iteration = iteration;
         return false;
       }
-    if (iteration < progress_iteration + stall_iterations ||
-        best.error > parameters.acceptable_tolerance)
+    if (iteration < progress_iteration + stall_iterations)
       return false;
+    return take_best("no progress in " + std::to_string(stall_iterations) + " iterations",
+                     "stalled", iteration);
+  }
 
-    minimizer.progress << "      no progress in " << stall_iterations
-                       << " iterations: the iterate of iteration " << best.iteration
+  template <int dim>
+  bool
+  InteriorPointIteration<dim>::take_best(const std::string &event,
+                                         const std::string &short_event,
+                                         const unsigned int iteration)
+  {
+    if (best.error > parameters.acceptable_tolerance)
+      return false;
+    minimizer.progress << "      " << event << ": the iterate of iteration " << best.iteration
                        << " (largest relative residual " << std::scientific
                        << std::setprecision(3) << best.error
                        << ") meets the acceptable tolerance" << std::endl;
@@ -305,7 +314,8 @@ namespace Signorini
     stats.residual   = best.dual;
     stats.evaluation = e;
     std::ostringstream note;
-    note << "converged to the acceptable tolerance (stalled; largest relative residual "
+    note << "converged to the acceptable tolerance (" << short_event
+         << "; largest relative residual "
          << std::scientific << std::setprecision(2) << best.error << ")";
     stats.reason = note.str();
     finish(best.mu_avg);

@@ -89,6 +89,20 @@ namespace Signorini
     stalled(const Residuals &r, const unsigned int iteration);
 
     /**
+     * If stalled() recorded an acceptable iterate, make it the result
+     * (u, s, z and the statistics, whose note names @p short_event), say
+     * @p event with it and return true; else false. After a stall, and
+     * after a line search that finds no decrease: near a solution whose
+     * forces vanish (the end of an unloading with friction) the merit
+     * function's changes fall below what the line search can resolve
+     * once an acceptable iterate has been passed.
+     */
+    bool
+    take_best(const std::string &event,
+              const std::string &short_event,
+              const unsigned int iteration);
+
+    /**
      * The active-set polish, if it applies (direct solver, complementarity
      * nearly met, the active set changed since the last attempt on any
      * rank): true if it converged (the statistics hold the result).
